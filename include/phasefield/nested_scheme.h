@@ -1,0 +1,208 @@
+#ifndef phasefield_nested_scheme_h
+#define phasefield_nested_scheme_h
+
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <phasefield/lumped_operators.h>
+#include <phasefield/parameters.h>
+
+namespace PhaseField
+{
+  /** Block indices of the three fields. */
+  namespace Field
+  {
+    constexpr unsigned int U = 0;
+    constexpr unsigned int V = 1;
+    constexpr unsigned int P = 2;
+  } // namespace Field
+
+  /** The double well Psi(v) = (1-v^2)^2 and its derivatives. */
+  namespace DoubleWell
+  {
+    inline double
+    psi(const double v)
+    {
+      return (1 - v * v) * (1 - v * v);
+    }
+    inline double
+    d_psi(const double v)
+    {
+      return -4 * v * (1 - v * v);
+    }
+    inline double
+    d2_psi(const double v)
+    {
+      return -4 + 12 * v * v;
+    }
+    inline double
+    d3_psi(const double v)
+    {
+      return 24 * v;
+    }
+  } // namespace DoubleWell
+
+  /**
+   * Coefficients of one nested step (DESIGN.md section 2). With
+   * `double_well = false` and epsilon = 1 the scheme is the biharmonic
+   * model problem of thesis chapter 4.
+   */
+  struct NestedCoefficients
+  {
+    double epsilon;
+    double tau;
+    double inner_tau;
+    bool   double_well = true;
+
+    /** a = tau / inner_tau^2. */
+    double
+    a() const
+    {
+      return tau / (inner_tau * inner_tau);
+    }
+    /** Weight of M Psi'(V) in the inner equation: inner_tau/(2 eps^2). */
+    double
+    c() const
+    {
+      return double_well ? inner_tau / (2 * epsilon * epsilon) : 0.;
+    }
+  };
+
+  /** Energies of a phase field in geometric units (DESIGN.md section 2). */
+  struct Energies
+  {
+    /** (3/4) (1/2) eps Int ((U-V)/ttau)^2: pi/r for a circle. */
+    double willmore;
+    /** (3/4) a_eps[U]: the perimeter / surface area. */
+    double area;
+    /** Int (1-U)/2: the measure of the inside phase. */
+    double inside_measure;
+  };
+
+  /**
+   * Solver of the reduced Newton system S dV = r (see
+   * NestedScheme::solve_newton_system()). Direct: MUMPS through Trilinos
+   * Amesos. Iterative: CG with algebraic multigrid.
+   */
+  class ReducedSystemSolver
+  {
+  public:
+    ReducedSystemSolver(const LinearSolverType type,
+                        const double           relative_tolerance,
+                        const unsigned int     max_iterations);
+
+    /** Solve; returns the number of iterations (1 for the direct solver). */
+    unsigned int
+    solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+          dealii::TrilinosWrappers::MPI::Vector &       solution,
+          const dealii::TrilinosWrappers::MPI::Vector & rhs) const;
+
+    LinearSolverType
+    type() const
+    {
+      return solver_type;
+    }
+
+  private:
+    const LinearSolverType solver_type;
+    const double           relative_tolerance;
+    const unsigned int     max_iterations;
+  };
+
+  /**
+   * Residual and Newton step of the nested variational time discretization
+   * (thesis (3.17)-(3.19)) for Q1 elements with lumped mass. With
+   * Z = (U, V, P) and the Lagrangian divided by 2 eps, the residual is
+   *
+   *   R_U = M(U-U^k) - a M(V-U) - M P
+   *   R_V = a M(V-U) + K(V) P,   K(V) = M + c M[Psi''(V)] + ttau L
+   *   R_P = M(V-U) + c M Psi'(V) + ttau L V
+   *
+   * with a = tau/ttau^2, c = ttau/(2 eps^2), and the exact Jacobian is the
+   * symmetric matrix
+   *
+   *   J = [ (1+a)M   -aM                 -M   ]
+   *       [ -aM      aM + c M[Psi'''(V)P] K(V) ]
+   *       [ -M       K(V)                 0   ].
+   *
+   * Since M is diagonal, J dZ = -R is solved exactly by elimination:
+   * dV solves S dV = -R_V + a R_P - K M^-1 ((1+a) R_P + R_U) with
+   *   S = b M + D + (1+a) Khat M^-1 Khat,  Khat = K - b M, b = a/(1+a),
+   *   D = c M[Psi'''(V) P];
+   * then dU = M^-1 (K dV + R_P) and
+   * dP = M^-1 (((1+a) K - a M) dV + (1+a) R_P + R_U).
+   */
+  template <int dim>
+  class NestedScheme
+  {
+  public:
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    NestedScheme(const LumpedOperators<dim> &operators,
+                 const NestedCoefficients &  coefficients);
+
+    /**
+     * Residual R(Z) for the previous outer state @p old_u. The optional
+     * @p forcing F (a nodal vector, already multiplied by M) enters the
+     * outer energy as -2 tau F.U, i.e. R_U -= tau F / eps.
+     */
+    void
+    residual(const Vector &     old_u,
+             const BlockVector &z,
+             BlockVector &      r,
+             const Vector *     forcing = nullptr) const;
+
+    /** sqrt(R^T M^-1 R) summed over the three blocks. */
+    double
+    residual_norm(const BlockVector &r) const;
+
+    /**
+     * Solve J(Z) dZ = -R for the Newton update @p dz. Returns the
+     * iterations of the linear solver.
+     */
+    unsigned int
+    solve_newton_system(const BlockVector &        z,
+                        const BlockVector &        r,
+                        BlockVector &              dz,
+                        const ReducedSystemSolver &solver) const;
+
+    /** y = J(Z) x: the Jacobian applied to a vector (used by tests). */
+    void
+    jacobian_vmult(const BlockVector &z,
+                   const BlockVector &x,
+                   BlockVector &      y) const;
+
+    /**
+     * Algorithm 3.1: given U in @p z, solve R_P(U, V) = 0 for V (Newton)
+     * and then R_V(U, V, P) = 0 for P. Returns Newton iterations.
+     */
+    unsigned int
+    initialize_v_and_p(BlockVector &              z,
+                       const ReducedSystemSolver &solver,
+                       const double               tolerance) const;
+
+    /** Energies of the state @p z in geometric units. */
+    Energies
+    energies(const BlockVector &z) const;
+
+    const NestedCoefficients &
+    coefficients() const
+    {
+      return coeff;
+    }
+
+  private:
+    /** K(V) = M + c M[Psi''(V)] + ttau L, shifted by -shift*M. */
+    void
+    build_k(const Vector &                          v,
+            const double                            shift,
+            dealii::TrilinosWrappers::SparseMatrix &k) const;
+
+    const LumpedOperators<dim> &ops;
+    const NestedCoefficients    coeff;
+  };
+} // namespace PhaseField
+
+#endif

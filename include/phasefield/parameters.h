@@ -1,0 +1,201 @@
+#ifndef phasefield_parameters_h
+#define phasefield_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+/**
+ * Parameter structs of the phase-field programs. Each struct owns one
+ * subsection of the .prm file and has the usual pair of
+ * declare_parameters() / parse_parameters() functions. Validation that
+ * needs more than a pattern (e.g. Finest level >= Coarsest level) is done
+ * in parse_parameters() and reported with the name of the parameter.
+ */
+namespace PhaseField
+{
+  /**
+   * Thrown for invalid user input. The message names the offending
+   * parameter; programs print it and exit with a non-zero status.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    explicit InputError(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  /**
+   * Evaluate a muParser expression in the mesh size @p h (e.g. `4*h`,
+   * `h^2`, `0.03*h`, `2^-6`). @p parameter_name is used in the error
+   * message if the expression is malformed or not finite.
+   */
+  double
+  evaluate_expression_in_h(const std::string &expression,
+                           const double       h,
+                           const std::string &parameter_name);
+
+  /**
+   * Parse a comma separated list of doubles; throws InputError naming
+   * @p parameter_name on failure.
+   */
+  std::vector<double>
+  parse_double_list(const std::string &text, const std::string &parameter_name);
+
+  /** Subsection `Geometry`: the initial shape. */
+  struct GeometryParameters
+  {
+    /** One of the names in DESIGN.md section 5. */
+    std::string shape;
+    /** Centre; empty means the centre of the unit cell (0.5, ..., 0.5). */
+    std::vector<double> center;
+    /** Second centre (only used by `two circles`). */
+    std::vector<double> second_center;
+    double              radius;
+    /** Edge lengths, disc diameter/thickness, semi-axes, torus R and r. */
+    std::vector<double> sizes;
+    /** Signed distance as a muParser expression in x, y (, z). */
+    std::string expression;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection `Mesh`: narrow-band adaptivity on [0,1]^d. */
+  struct MeshParameters
+  {
+    unsigned int finest_level;
+    unsigned int coarsest_level;
+    bool         adaptive;
+    /** Half width of the finest band, in units of epsilon. */
+    double band_width;
+    /** Re-mesh every this many time steps. */
+    unsigned int refinement_interval;
+
+    /** Finest mesh size h = 2^-finest_level. */
+    double
+    h() const;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Time stepping scheme of willmore_flow. */
+  enum class Scheme
+  {
+    nested
+  };
+
+  /**
+   * Subsections `Phase field` and `Time stepping`. The raw expressions are
+   * kept so that they can be evaluated once h is known (see evaluate()).
+   */
+  struct ModelParameters
+  {
+    Scheme       scheme;
+    std::string  epsilon_expression;
+    std::string  tau_expression;
+    std::string  inner_tau_expression;
+    unsigned int n_steps;
+
+    /** Values after evaluate(). */
+    double epsilon   = 0;
+    double tau       = 0;
+    double inner_tau = 0;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+    /** Evaluate the expressions at mesh size @p h and validate them. */
+    void
+    evaluate(const double h);
+  };
+
+  /** Subsection `Newton`. */
+  struct NewtonParameters
+  {
+    /** Stop when ||R||_{M^-1} <= tolerance * ||R_0||_{M^-1} ... */
+    double relative_tolerance;
+    /** ... or when ||R||_{M^-1} <= absolute tolerance. */
+    double       absolute_tolerance;
+    unsigned int max_iterations;
+    /** Backtracking halvings of one Newton update before giving up. */
+    unsigned int max_damping_steps;
+    /** How often a failed time step may be retried with half the step. */
+    unsigned int max_step_halvings;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** How the reduced (Schur complement) system is solved. */
+  enum class LinearSolverType
+  {
+    automatic,
+    direct,
+    iterative
+  };
+
+  /** Subsection `Linear solver`. */
+  struct LinearSolverParameters
+  {
+    LinearSolverType type;
+    double           relative_tolerance;
+    unsigned int     max_iterations;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection `Output`. */
+  struct OutputParameters
+  {
+    /** Write VTU every this many steps (0: never). */
+    unsigned int vtu_interval;
+    bool         verbose;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** All parameters of willmore_flow. */
+  struct WillmoreParameters
+  {
+    unsigned int           dimension;
+    std::string            output_directory;
+    GeometryParameters     geometry;
+    MeshParameters         mesh;
+    ModelParameters        model;
+    NewtonParameters       newton;
+    LinearSolverParameters linear_solver;
+    OutputParameters       output;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * Read @p filename into @p prm. Missing files, unknown parameters and
+   * values that violate their pattern become an InputError with a message
+   * that names the file and the parameter.
+   */
+  void
+  read_parameter_file(dealii::ParameterHandler &prm, const std::string &filename);
+} // namespace PhaseField
+
+#endif

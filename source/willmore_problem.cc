@@ -1,0 +1,487 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <phasefield/narrow_band.h>
+#include <phasefield/shapes.h>
+#include <phasefield/statistics.h>
+#include <phasefield/willmore_problem.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  template <int dim>
+  WillmoreProblem<dim>::WillmoreProblem(const WillmoreParameters &parameters)
+    : prm(parameters)
+    , mpi_communicator(MPI_COMM_WORLD)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , computing_timer(mpi_communicator,
+                      pcout,
+                      TimerOutput::never,
+                      TimerOutput::wall_times)
+    , triangulation(mpi_communicator,
+                    typename Triangulation<dim>::MeshSmoothing(
+                      Triangulation<dim>::smoothing_on_refinement |
+                      Triangulation<dim>::smoothing_on_coarsening))
+    , fe(1)
+    , dof_handler(triangulation)
+  {
+    signed_distance = Shapes::create_signed_distance<dim>(prm.geometry);
+
+    LinearSolverType type = prm.linear_solver.type;
+    if (type == LinearSolverType::automatic)
+      type = (dim == 2 ? LinearSolverType::direct :
+                         LinearSolverType::iterative);
+    linear_solver =
+      std::make_unique<ReducedSystemSolver>(type,
+                                            prm.linear_solver.relative_tolerance,
+                                            prm.linear_solver.max_iterations);
+  }
+
+
+
+  template <int dim>
+  NestedCoefficients
+  WillmoreProblem<dim>::coefficients(const double tau) const
+  {
+    NestedCoefficients c;
+    c.epsilon     = prm.model.epsilon;
+    c.tau         = tau;
+    c.inner_tau   = prm.model.inner_tau;
+    c.double_well = true;
+    return c;
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::create_initial_mesh()
+  {
+    TimerOutput::Scope t(computing_timer, "mesh: initial");
+    GridGenerator::hyper_cube(triangulation, 0., 1.);
+    if (!prm.mesh.adaptive)
+      {
+        triangulation.refine_global(prm.mesh.finest_level);
+        return;
+      }
+    triangulation.refine_global(prm.mesh.coarsest_level);
+    NarrowBand::refine_around_zero_level_set(triangulation,
+                                             *signed_distance,
+                                             prm.mesh.band_width,
+                                             prm.model.epsilon,
+                                             prm.mesh.finest_level);
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::setup_system()
+  {
+    TimerOutput::Scope t(computing_timer, "setup");
+    dof_handler.distribute_dofs(fe);
+
+    IndexSet locally_relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.close();
+
+    operators.reinit(dof_handler, constraints, mpi_communicator);
+    reinit_vector(solution);
+    old_u.reinit(operators.locally_owned_dofs, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::reinit_vector(BlockVector &v) const
+  {
+    v.reinit(std::vector<IndexSet>(3, operators.locally_owned_dofs),
+             mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::distribute_constraints(BlockVector &v) const
+  {
+    for (unsigned int b = 0; b < 3; ++b)
+      constraints.distribute(v.block(b));
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::initialize_fields()
+  {
+    TimerOutput::Scope                 t(computing_timer, "initialisation");
+    const Shapes::PhaseFieldProfile<dim> u0(*signed_distance,
+                                            prm.model.epsilon);
+    VectorTools::interpolate(dof_handler, u0, solution.block(Field::U));
+    const NestedScheme<dim> scheme(operators, coefficients(prm.model.tau));
+    scheme.initialize_v_and_p(solution, *linear_solver, 1e-10);
+    distribute_constraints(solution);
+  }
+
+
+
+  template <int dim>
+  StepReport
+  WillmoreProblem<dim>::solve_time_step(const double tau)
+  {
+    TimerOutput::Scope      t(computing_timer, "newton");
+    const NestedScheme<dim> scheme(operators, coefficients(tau));
+    const auto &            newton = prm.newton;
+
+    BlockVector residual, update, trial;
+    reinit_vector(residual);
+    reinit_vector(update);
+    reinit_vector(trial);
+
+    // Scale of the terms of the residual, so that the absolute tolerance
+    // is relative to round-off: ||U|| + a ||V-U|| + ||P|| in L2.
+    const auto term_scale = [&](const BlockVector &z) {
+      Vector difference(z.block(Field::V));
+      difference -= z.block(Field::U);
+      return std::sqrt(operators.mass_product(z.block(Field::U),
+                                              z.block(Field::U))) +
+             scheme.coefficients().a() *
+               std::sqrt(operators.mass_product(difference, difference)) +
+             std::sqrt(operators.mass_product(z.block(Field::P),
+                                              z.block(Field::P)));
+    };
+
+    StepReport report;
+    scheme.residual(old_u, solution, residual);
+    double       norm       = scheme.residual_norm(residual);
+    const double norm0      = norm;
+    const double target     = std::max(newton.relative_tolerance * norm0,
+                                   newton.absolute_tolerance *
+                                     term_scale(solution));
+    report.final_residual_norm = norm;
+    if (prm.output.verbose)
+      pcout << "    Newton 0: residual " << norm << " (target " << target
+            << ')' << std::endl;
+    if (!std::isfinite(norm))
+      return report;
+    if (norm <= target)
+      {
+        report.converged = true;
+        return report;
+      }
+
+    for (unsigned int it = 1; it <= newton.max_iterations; ++it)
+      {
+        report.linear_iterations +=
+          scheme.solve_newton_system(solution, residual, update, *linear_solver);
+        report.newton_iterations = it;
+
+        double       lambda     = 1;
+        double       trial_norm = std::numeric_limits<double>::quiet_NaN();
+        unsigned int damping    = 0;
+        for (; damping <= newton.max_damping_steps; ++damping, lambda *= 0.5)
+          {
+            trial = solution;
+            trial.add(lambda, update);
+            distribute_constraints(trial);
+            scheme.residual(old_u, trial, residual);
+            trial_norm = scheme.residual_norm(residual);
+            if (std::isfinite(trial_norm) &&
+                (trial_norm < norm || trial_norm <= target))
+              break;
+          }
+        if (damping > newton.max_damping_steps)
+          {
+            pcout << "    Newton iteration " << it
+                  << ": no damped update reduces the residual (residual "
+                  << norm << ")." << std::endl;
+            return report;
+          }
+        if (damping > 0)
+          pcout << "    Newton iteration " << it << ": update damped by "
+                << lambda << std::endl;
+        solution = trial;
+        norm     = trial_norm;
+        report.final_residual_norm = norm;
+        if (prm.output.verbose)
+          pcout << "    Newton " << it << ": residual " << norm << std::endl;
+        if (norm <= target)
+          {
+            report.converged = true;
+            return report;
+          }
+      }
+    pcout << "    Newton did not reach the tolerance in "
+          << newton.max_iterations << " iterations (residual " << norm
+          << ", target " << target << ")." << std::endl;
+    return report;
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::refine_mesh()
+  {
+    TimerOutput::Scope t(computing_timer, "mesh: adapt");
+    std::vector<Vector> ghosted(3);
+    for (unsigned int b = 0; b < 3; ++b)
+      {
+        ghosted[b].reinit(operators.locally_owned_dofs,
+                          operators.locally_relevant_dofs,
+                          mpi_communicator);
+        ghosted[b] = solution.block(b);
+      }
+    if (!NarrowBand::flag_cells_from_phase_field(dof_handler,
+                                                 ghosted[Field::U],
+                                                 prm.mesh.band_width,
+                                                 prm.mesh.finest_level,
+                                                 prm.mesh.coarsest_level))
+      return;
+
+    parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
+    std::vector<const Vector *> in = {&ghosted[0], &ghosted[1], &ghosted[2]};
+    triangulation.prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(in);
+    triangulation.execute_coarsening_and_refinement();
+
+    setup_system();
+    std::vector<Vector *> out = {&solution.block(0),
+                                 &solution.block(1),
+                                 &solution.block(2)};
+    transfer.interpolate(out);
+    distribute_constraints(solution);
+  }
+
+
+
+  template <int dim>
+  double
+  WillmoreProblem<dim>::compute_l2_error(const double time) const
+  {
+    const double radius = Shapes::exact_radius(prm.geometry, dim, time);
+    if (radius < 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    Point<dim> center;
+    const bool quarter = prm.geometry.shape == "quarter circle";
+    for (unsigned int d = 0; d < dim; ++d)
+      center[d] = prm.geometry.center.empty() ? (quarter ? 0. : 0.5) :
+                                                prm.geometry.center[d];
+    const Shapes::SphereDistance<dim>    distance(center, radius);
+    const Shapes::PhaseFieldProfile<dim> exact(distance, prm.model.epsilon);
+
+    Vector u(operators.locally_owned_dofs,
+             operators.locally_relevant_dofs,
+             mpi_communicator);
+    u = solution.block(Field::U);
+    dealii::Vector<float> cellwise(triangulation.n_active_cells());
+    VectorTools::integrate_difference(dof_handler,
+                                      u,
+                                      exact,
+                                      cellwise,
+                                      QGauss<dim>(3),
+                                      VectorTools::L2_norm);
+    return VectorTools::compute_global_error(triangulation,
+                                             cellwise,
+                                             VectorTools::L2_norm);
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::output_results(const unsigned int step,
+                                       const double       time)
+  {
+    TimerOutput::Scope  t(computing_timer, "output");
+    std::vector<Vector> fields(4);
+    for (auto &f : fields)
+      f.reinit(operators.locally_owned_dofs,
+               operators.locally_relevant_dofs,
+               mpi_communicator);
+    Vector curvature(solution.block(Field::U));
+    curvature -= solution.block(Field::V);
+    curvature /= prm.model.inner_tau;
+    for (unsigned int b = 0; b < 3; ++b)
+      fields[b] = solution.block(b);
+    fields[3] = curvature;
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(fields[0], "U");
+    data_out.add_data_vector(fields[1], "V");
+    data_out.add_data_vector(fields[2], "P");
+    data_out.add_data_vector(fields[3], "curvature");
+    dealii::Vector<float> subdomain(triangulation.n_active_cells());
+    dealii::Vector<float> level(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          subdomain(cell->active_cell_index()) = cell->subdomain_id();
+          level(cell->active_cell_index())     = cell->level();
+        }
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.add_data_vector(level, "level");
+    data_out.build_patches();
+    DataOutBase::VtkFlags flags;
+    flags.time  = time;
+    flags.cycle = step;
+    data_out.set_flags(flags);
+    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+      prm.output_directory + "/", "solution", step, mpi_communicator, 5);
+
+    pvd_records.emplace_back(time, pvtu);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ofstream pvd(prm.output_directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::run()
+  {
+    Timer wall_timer;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::filesystem::create_directories(prm.output_directory);
+    MPI_Barrier(mpi_communicator);
+
+    const double h = prm.mesh.h();
+    pcout << "willmore_flow: " << dim << "D, shape <" << prm.geometry.shape
+          << ">, h = " << h << ", epsilon = " << prm.model.epsilon
+          << ", tau = " << prm.model.tau
+          << ", inner tau = " << prm.model.inner_tau << ", "
+          << Utilities::MPI::n_mpi_processes(mpi_communicator)
+          << " MPI rank(s), "
+          << (linear_solver->type() == LinearSolverType::direct ?
+                "direct (MUMPS)" :
+                "iterative (CG + AMG)")
+          << " linear solver" << std::endl;
+    if (prm.model.inner_tau >= 0.5 * std::pow(prm.model.epsilon, 2))
+      pcout << "Warning: Inner tau >= epsilon^2/2; the inner (Allen-Cahn) "
+               "energy is then not convex and Newton may fail."
+            << std::endl;
+
+    create_initial_mesh();
+    setup_system();
+    initialize_fields();
+
+    StatisticsFile statistics(prm.output_directory + "/statistics.csv",
+                              {"step",
+                               "time",
+                               "newton_iterations",
+                               "linear_iterations",
+                               "cells",
+                               "dofs",
+                               "willmore_energy",
+                               "area_energy",
+                               "inside_measure",
+                               "l2_error",
+                               "wall_seconds",
+                               "tau",
+                               "residual_norm"},
+                              mpi_communicator);
+
+    double     time   = 0;
+    const auto record = [&](const unsigned int step,
+                            const StepReport & report,
+                            const double       tau) {
+      const NestedScheme<dim> scheme(operators, coefficients(tau));
+      const Energies          e     = scheme.energies(solution);
+      const double            error = compute_l2_error(time);
+      const double            dofs  = 3. * dof_handler.n_dofs();
+      const double            cells = triangulation.n_global_active_cells();
+      statistics.add_row({double(step),
+                          time,
+                          double(report.newton_iterations),
+                          double(report.linear_iterations),
+                          cells,
+                          dofs,
+                          e.willmore,
+                          e.area,
+                          e.inside_measure,
+                          error,
+                          wall_timer.wall_time(),
+                          tau,
+                          report.final_residual_norm});
+      pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
+            << std::setprecision(5) << time << "  newton "
+            << report.newton_iterations << " (linear "
+            << report.linear_iterations << ")  W = " << std::setprecision(7)
+            << e.willmore << "  A = " << e.area
+            << "  inside = " << e.inside_measure;
+      if (!std::isnan(error))
+        pcout << "  L2 error = " << std::setprecision(4) << error;
+      pcout << "  cells " << cells << "  [" << std::setprecision(3)
+            << wall_timer.wall_time() << " s]" << std::endl;
+      if (prm.output.vtu_interval > 0 &&
+          (step % prm.output.vtu_interval == 0 ||
+           step == prm.model.n_steps))
+        output_results(step, time);
+    };
+    record(0, StepReport(), prm.model.tau);
+
+    for (unsigned int step = 1; step <= prm.model.n_steps; ++step)
+      {
+        old_u                   = solution.block(Field::U);
+        const BlockVector saved = solution;
+        double            tau   = prm.model.tau;
+        StepReport        report;
+        for (unsigned int attempt = 0;; ++attempt)
+          {
+            report = solve_time_step(tau);
+            if (report.converged)
+              break;
+            solution = saved;
+            AssertThrow(attempt < prm.newton.max_step_halvings,
+                        ExcMessage(
+                          "Newton's method did not converge in step " +
+                          std::to_string(step) + " even after halving the "
+                          "time step " +
+                          std::to_string(prm.newton.max_step_halvings) +
+                          " times (tau = " + std::to_string(tau) +
+                          "). Try a smaller <Time stepping / Tau> or a "
+                          "larger <Newton / Maximum iterations>."));
+            tau *= 0.5;
+            pcout << "  step " << step
+                  << ": Newton failed, retrying with half the time step, "
+                     "tau = "
+                  << tau << std::endl;
+          }
+        time += tau;
+        record(step, report, tau);
+        if (prm.mesh.adaptive && step % prm.mesh.refinement_interval == 0 &&
+            step < prm.model.n_steps)
+          refine_mesh();
+      }
+    computing_timer.print_summary();
+  }
+
+
+
+  template class WillmoreProblem<2>;
+  template class WillmoreProblem<3>;
+} // namespace PhaseField

@@ -1,0 +1,72 @@
+// Small replacement of deal.II's tests.h (which deal.II does not install):
+// every test writes what it checks into the file "output", which the test
+// harness compares with the .output file using numdiff.
+#ifndef phasefield_tests_h
+#define phasefield_tests_h
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace Testing
+{
+  /** The file "output" on rank 0, a null stream elsewhere. */
+  inline std::ostream &
+  log()
+  {
+    static std::ofstream null_stream;
+    static std::ofstream file;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return null_stream;
+    if (!file.is_open())
+      {
+        file.open("output");
+        file << std::setprecision(6);
+      }
+    return file;
+  }
+
+  /** Read a CSV file into a header and rows of numbers. */
+  inline std::vector<std::vector<double>>
+  read_csv(const std::string &filename, std::vector<std::string> &header)
+  {
+    std::ifstream                    in(filename);
+    std::string                      line;
+    std::vector<std::vector<double>> rows;
+    header.clear();
+    if (std::getline(in, line))
+      {
+        std::stringstream ss(line);
+        std::string       cell;
+        while (std::getline(ss, cell, ','))
+          header.push_back(cell);
+      }
+    while (std::getline(in, line))
+      {
+        std::stringstream   ss(line);
+        std::string         cell;
+        std::vector<double> row;
+        while (std::getline(ss, cell, ','))
+          row.push_back(std::stod(cell));
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+  /** Index of @p column in @p header (-1 if absent). */
+  inline int
+  column(const std::vector<std::string> &header, const std::string &column)
+  {
+    for (unsigned int i = 0; i < header.size(); ++i)
+      if (header[i] == column)
+        return i;
+    return -1;
+  }
+} // namespace Testing
+
+#endif
