@@ -1,4 +1,5 @@
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -11,12 +12,51 @@ namespace PhaseField
 {
   using namespace dealii;
 
-  ReducedSystemSolver::ReducedSystemSolver(const LinearSolverType type,
-                                           const double relative_tolerance,
-                                           const unsigned int max_iterations)
+  /** A matrix and its LU factorisation, usable as a preconditioner. */
+  class ReducedSystemSolver::Factorization
+  {
+  public:
+    explicit Factorization(const TrilinosWrappers::SparseMatrix &matrix)
+      : control(1, 0)
+      , solver(control,
+               TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                              "Amesos_Mumps"))
+    {
+      factorized_matrix.copy_from(matrix);
+      solver.initialize(factorized_matrix);
+    }
+
+    void
+    vmult(TrilinosWrappers::MPI::Vector &      dst,
+          const TrilinosWrappers::MPI::Vector &src) const
+    {
+      solver.solve(dst, src);
+    }
+
+    types::global_dof_index
+    size() const
+    {
+      return factorized_matrix.m();
+    }
+
+  private:
+    TrilinosWrappers::SparseMatrix         factorized_matrix;
+    SolverControl                          control;
+    mutable TrilinosWrappers::SolverDirect solver;
+  };
+
+
+
+  ReducedSystemSolver::ReducedSystemSolver(
+    const LinearSolverType type,
+    const double           relative_tolerance,
+    const unsigned int     max_iterations,
+    const unsigned int     refactorization_threshold)
     : solver_type(type)
     , relative_tolerance(relative_tolerance)
     , max_iterations(max_iterations)
+    , refactorization_threshold(refactorization_threshold)
+    , tolerance(relative_tolerance)
   {
     Assert(type != LinearSolverType::automatic,
            ExcMessage("Resolve 'auto' before constructing the solver."));
@@ -24,37 +64,65 @@ namespace PhaseField
 
 
 
+  ReducedSystemSolver::~ReducedSystemSolver() = default;
+
+
+
+  void
+  ReducedSystemSolver::set_tolerance(const double relative_tolerance)
+  {
+    tolerance = std::max(relative_tolerance, this->relative_tolerance);
+  }
+
+
+
+  void
+  ReducedSystemSolver::reset()
+  {
+    factorization.reset();
+    last_iterations = 0;
+  }
+
+
+
   unsigned int
   ReducedSystemSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                              TrilinosWrappers::MPI::Vector &       solution,
-                             const TrilinosWrappers::MPI::Vector & rhs) const
+                             const TrilinosWrappers::MPI::Vector & rhs)
   {
-    if (solver_type == LinearSolverType::direct)
-      {
-        SolverControl                    control(1, 0);
-        TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                            "Amesos_Mumps");
-        TrilinosWrappers::SolverDirect solver(control, data);
-        solver.solve(matrix, solution, rhs);
-        return 1;
-      }
-
-    TrilinosWrappers::PreconditionAMG                 amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-    amg_data.elliptic              = true;
-    amg_data.higher_order_elements = false;
-    amg_data.smoother_sweeps       = 2;
-    amg_data.aggregation_threshold = 0.02;
-    amg.initialize(matrix, amg_data);
-
     SolverControl control(max_iterations,
-                          relative_tolerance * rhs.l2_norm(),
+                          tolerance * rhs.l2_norm(),
                           false,
                           false);
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     solution = 0;
-    cg.solve(matrix, solution, rhs, amg);
-    return control.last_step();
+    if (solver_type == LinearSolverType::direct)
+      {
+        if (!factorization || factorization->size() != matrix.m() ||
+            last_iterations > refactorization_threshold)
+          {
+            factorization = std::make_unique<Factorization>(matrix);
+            ++factorization_count;
+          }
+        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+          control,
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+            50, /*right_preconditioning=*/true));
+        gmres.solve(matrix, solution, rhs, *factorization);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+        amg_data.elliptic              = true;
+        amg_data.higher_order_elements = false;
+        amg_data.smoother_sweeps       = 2;
+        amg_data.aggregation_threshold = 0.02;
+        amg.initialize(matrix, amg_data);
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        cg.solve(matrix, solution, rhs, amg);
+      }
+    last_iterations = control.last_step();
+    return last_iterations;
   }
 
 
@@ -154,7 +222,7 @@ namespace PhaseField
   NestedScheme<dim>::solve_newton_system(const BlockVector &        z,
                                          const BlockVector &        r,
                                          BlockVector &              dz,
-                                         const ReducedSystemSolver &solver) const
+                                         ReducedSystemSolver &solver) const
   {
     const double a = coeff.a();
     const double b = a / (1 + a);
@@ -256,8 +324,8 @@ namespace PhaseField
 
   template <int dim>
   unsigned int
-  NestedScheme<dim>::initialize_v_and_p(BlockVector &              z,
-                                        const ReducedSystemSolver &solver,
+  NestedScheme<dim>::initialize_v_and_p(BlockVector &        z,
+                                        ReducedSystemSolver &solver,
                                         const double               tolerance) const
   {
     const double  a = coeff.a();

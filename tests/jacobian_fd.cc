@@ -61,7 +61,7 @@ check(const LinearSolverType solver_type)
   coeff.tau       = 0.03 * h;
   coeff.inner_tau = h * h;
   const NestedScheme<dim> scheme(ops, coeff);
-  const ReducedSystemSolver solver(solver_type, 1e-12, 2000);
+  ReducedSystemSolver solver(solver_type, 1e-12, 2000);
 
   using BlockVector = TrilinosWrappers::MPI::BlockVector;
   const std::vector<IndexSet> parts(3, ops.locally_owned_dofs);

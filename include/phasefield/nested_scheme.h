@@ -8,6 +8,8 @@
 #include <phasefield/lumped_operators.h>
 #include <phasefield/parameters.h>
 
+#include <memory>
+
 namespace PhaseField
 {
   /** Block indices of the three fields. */
@@ -82,21 +84,55 @@ namespace PhaseField
 
   /**
    * Solver of the reduced Newton system S dV = r (see
-   * NestedScheme::solve_newton_system()). Direct: MUMPS through Trilinos
-   * Amesos. Iterative: CG with algebraic multigrid.
+   * NestedScheme::solve_newton_system()).
+   *
+   * Direct: GMRES preconditioned with a sparse LU factorisation (MUMPS
+   * through Trilinos Amesos) of an earlier S. The factorisation is
+   * computed at the first solve and kept while GMRES needs at most
+   * `refactorization_threshold` iterations, so the first Newton
+   * iteration after a factorisation is an exact solve and later ones (or
+   * later time steps on the same mesh) cost a few matrix-vector products.
+   * Call reset() when the mesh changes.
+   *
+   * Iterative: CG with algebraic multigrid (Trilinos ML), memory linear in
+   * the unknowns.
    */
   class ReducedSystemSolver
   {
   public:
     ReducedSystemSolver(const LinearSolverType type,
                         const double           relative_tolerance,
-                        const unsigned int     max_iterations);
+                        const unsigned int     max_iterations,
+                        const unsigned int     refactorization_threshold = 8);
+    ~ReducedSystemSolver();
 
-    /** Solve; returns the number of iterations (1 for the direct solver). */
+    /**
+     * Solve; returns the number of Krylov iterations (1 when a fresh
+     * factorisation was applied once).
+     */
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
           dealii::TrilinosWrappers::MPI::Vector &       solution,
-          const dealii::TrilinosWrappers::MPI::Vector & rhs) const;
+          const dealii::TrilinosWrappers::MPI::Vector & rhs);
+
+    /**
+     * Relative tolerance of the next solves (an inexact Newton method
+     * sets it per iteration); never tighter than the one given to the
+     * constructor.
+     */
+    void
+    set_tolerance(const double relative_tolerance);
+
+    /** Forget the stored factorisation (e.g. after re-meshing). */
+    void
+    reset();
+
+    /** Number of LU factorisations computed so far. */
+    unsigned int
+    n_factorizations() const
+    {
+      return factorization_count;
+    }
 
     LinearSolverType
     type() const
@@ -105,9 +141,16 @@ namespace PhaseField
     }
 
   private:
-    const LinearSolverType solver_type;
-    const double           relative_tolerance;
-    const unsigned int     max_iterations;
+    class Factorization;
+
+    const LinearSolverType         solver_type;
+    const double                   relative_tolerance;
+    const unsigned int             max_iterations;
+    const unsigned int             refactorization_threshold;
+    double                         tolerance;
+    std::unique_ptr<Factorization> factorization;
+    unsigned int                   last_iterations     = 0;
+    unsigned int                   factorization_count = 0;
   };
 
   /**
@@ -166,7 +209,7 @@ namespace PhaseField
     solve_newton_system(const BlockVector &        z,
                         const BlockVector &        r,
                         BlockVector &              dz,
-                        const ReducedSystemSolver &solver) const;
+                        ReducedSystemSolver &solver) const;
 
     /** y = J(Z) x: the Jacobian applied to a vector (used by tests). */
     void
@@ -179,8 +222,8 @@ namespace PhaseField
      * and then R_V(U, V, P) = 0 for P. Returns Newton iterations.
      */
     unsigned int
-    initialize_v_and_p(BlockVector &              z,
-                       const ReducedSystemSolver &solver,
+    initialize_v_and_p(BlockVector &        z,
+                       ReducedSystemSolver &solver,
                        const double               tolerance) const;
 
     /** Energies of the state @p z in geometric units. */
