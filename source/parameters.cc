@@ -77,7 +77,7 @@ namespace PhaseField
     prm.enter_subsection("Geometry");
     prm.declare_entry(
       "Shape",
-      "circle",
+      "two circles",
       Patterns::Selection("circle|quarter circle|rectangle|two circles|cube|"
                           "disc|sphere|ellipsoid|torus|function"),
       "Initial shape. The phase field is tanh(signed distance / epsilon), "
@@ -92,14 +92,15 @@ namespace PhaseField
                       "",
                       Patterns::Anything(),
                       "Comma separated centre of the shape; empty: the centre "
-                      "of the unit cell (the origin for quarter circle).");
+                      "of the unit cell, the origin for quarter circle and "
+                      "(0.35, 0.5) for two circles.");
     prm.declare_entry("Second center",
-                      "0.65, 0.5, 0.5",
+                      "",
                       Patterns::Anything(),
-                      "Centre of the second circle of `two circles` (only "
-                      "the first dim entries are used).");
+                      "Centre of the second circle of `two circles`; empty: "
+                      "(0.65, 0.5).");
     prm.declare_entry("Radius",
-                      "0.25",
+                      "0.13",
                       Patterns::Double(0.),
                       "Radius of circle, quarter circle, two circles, "
                       "sphere.");
@@ -174,7 +175,8 @@ namespace PhaseField
                       "1",
                       Patterns::Integer(1),
                       "Adapt the mesh to the moving interface every this "
-                      "many time steps.");
+                      "many time steps (the band is wide enough for the interface to "
+                      "move a few epsilon in between).");
     prm.leave_subsection();
   }
 
@@ -228,7 +230,7 @@ namespace PhaseField
                       "Inner tau < epsilon^2/2 keeps the inner problem "
                       "convex.");
     prm.declare_entry("Number of steps",
-                      "10",
+                      "15",
                       Patterns::Integer(0),
                       "Number of outer time steps.");
     prm.leave_subsection();
@@ -370,7 +372,7 @@ namespace PhaseField
   {
     prm.enter_subsection("Output");
     prm.declare_entry("VTU interval",
-                      "1",
+                      "5",
                       Patterns::Integer(0),
                       "Write VTU/PVTU output every this many steps (0: no "
                       "VTU output). statistics.csv is always written.");

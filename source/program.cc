@@ -23,7 +23,7 @@ namespace PhaseField
     declare(prm);
 
     const std::string first = argc > 1 ? argv[1] : "";
-    if (argc != 2 || first == "--help" || first == "-h")
+    if (argc > 2 || first == "--help" || first == "-h")
       {
         if (root)
           {
@@ -36,10 +36,14 @@ namespace PhaseField
 
     try
       {
-        read_parameter_file(prm, first);
+        if (argc == 2)
+          read_parameter_file(prm, first);
         if (root)
           {
-            std::cout << "Parameters read from " << first << ":\n";
+            std::cout << (argc == 2 ? "Parameters read from " + first :
+                                      "No parameter file given: running "
+                                      "the built-in default (see --help)")
+                      << ":\n";
             prm.print_parameters(std::cout,
                                  ParameterHandler::ShortPRM |
                                    ParameterHandler::KeepDeclarationOrder);

@@ -92,10 +92,11 @@ namespace PhaseField
     create_signed_distance(const GeometryParameters &geometry)
     {
       const std::string &shape = geometry.shape;
-      const Point<dim>   center =
-        to_point<dim>(geometry.center,
-                      shape == "quarter circle" ? 0.0 : 0.5,
-                      "Geometry / Center");
+      Point<dim> center = to_point<dim>(geometry.center,
+                                        shape == "quarter circle" ? 0.0 : 0.5,
+                                        "Geometry / Center");
+      if (shape == "two circles" && geometry.center.empty())
+        center[0] = 0.35;
       const double r = geometry.radius;
       if (!(r > 0) && (shape == "circle" || shape == "quarter circle" ||
                        shape == "sphere" || shape == "two circles"))
@@ -106,9 +107,11 @@ namespace PhaseField
 
       if (shape == "two circles")
         {
-          const Point<dim> second = to_point<dim>(geometry.second_center,
-                                                  0.5,
-                                                  "Geometry / Second center");
+          Point<dim> second = to_point<dim>(geometry.second_center,
+                                            0.5,
+                                            "Geometry / Second center");
+          if (geometry.second_center.empty())
+            second[0] = 0.65;
           return std::make_unique<LambdaDistance<dim>>(
             [center, second, r](const Point<dim> &p) {
               return std::min(p.distance(center), p.distance(second)) - r;

@@ -70,3 +70,45 @@ namespace Testing
 } // namespace Testing
 
 #endif
+
+#include <phasefield/parameters.h>
+#include <phasefield/willmore_problem.h>
+
+namespace Testing
+{
+  /**
+   * Run willmore_flow on the parameters in @p prm_text (the test's output
+   * directory is "results") and return the rows of statistics.csv.
+   */
+  inline std::vector<std::vector<double>>
+  run_willmore(const std::string &prm_text, std::vector<std::string> &header)
+  {
+    dealii::ParameterHandler prm;
+    PhaseField::WillmoreParameters::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text + "\nset Output directory = results\n");
+    PhaseField::WillmoreParameters parameters;
+    parameters.parse_parameters(prm);
+    if (parameters.dimension == 2)
+      PhaseField::WillmoreProblem<2>(parameters).run();
+    else
+      PhaseField::WillmoreProblem<3>(parameters).run();
+    return read_csv("results/statistics.csv", header);
+  }
+
+  /** Print the named columns of @p rows with 6 significant digits. */
+  inline void
+  print_columns(const std::vector<std::vector<double>> &rows,
+                const std::vector<std::string> &        header,
+                const std::vector<std::string> &        columns)
+  {
+    for (const auto &c : columns)
+      log() << c << ' ';
+    log() << '\n';
+    for (const auto &row : rows)
+      {
+        for (const auto &c : columns)
+          log() << row[column(header, c)] << ' ';
+        log() << '\n';
+      }
+  }
+} // namespace Testing

@@ -1,0 +1,66 @@
+// Willmore flow of a quarter circle (r0 = 0.4 at the origin) on a small
+// adaptive mesh: Newton converges in few iterations, the energies are close
+// to the exact ones (quarter of pi/r and of 2 pi r), the radius measured by
+// the inside area follows r(t) = (2t + r0^4)^(1/4), and the Willmore energy
+// decreases. The .mpirun=2 variant checks that 2 ranks give the same table.
+
+#include "tests.h"
+
+#include <cmath>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::vector<std::string> header;
+  const auto               rows = Testing::run_willmore(R"(
+set Dimension = 2
+subsection Geometry
+  set Shape = quarter circle
+  set Radius = 0.4
+end
+subsection Mesh
+  set Finest level = 7
+  set Coarsest level = 3
+end
+subsection Phase field
+  set Epsilon = 4*h
+end
+subsection Time stepping
+  set Tau = 0.03*h
+  set Inner tau = h^2
+  set Number of steps = 4
+end
+subsection Output
+  set VTU interval = 2
+end
+)",
+                                               header);
+  Testing::print_columns(rows,
+                         header,
+                         {"step",
+                          "newton_iterations",
+                          "willmore_energy",
+                          "area_energy",
+                          "inside_measure",
+                          "l2_error"});
+
+  const double pi = M_PI;
+  bool         ok = true;
+  for (unsigned int i = 1; i < rows.size(); ++i)
+    {
+      const auto & row = rows[i];
+      const double t   = row[Testing::column(header, "time")];
+      const double r_exact = std::pow(2 * t + std::pow(0.4, 4), 0.25);
+      const double r_measured =
+        std::sqrt(4 * row[Testing::column(header, "inside_measure")] / pi);
+      const double w = row[Testing::column(header, "willmore_energy")];
+      ok = ok && std::abs(r_measured / r_exact - 1) < 0.01;
+      ok = ok && std::abs(w / (pi / (4 * r_exact)) - 1) < 0.05;
+      ok = ok && w <= rows[i - 1][Testing::column(header, "willmore_energy")];
+      ok = ok && row[Testing::column(header, "newton_iterations")] <= 10;
+    }
+  Testing::log() << "radius within 1%, Willmore energy within 5% and "
+                    "decreasing: "
+                 << (ok ? "yes" : "NO") << std::endl;
+}
