@@ -88,16 +88,27 @@ namespace PhaseField
 
 
     template <int dim>
+    Point<dim>
+    shape_center(const GeometryParameters &geometry)
+    {
+      Point<dim> center =
+        to_point<dim>(geometry.center,
+                      geometry.shape == "quarter circle" ? 0.0 : 0.5,
+                      "Geometry / Center");
+      if (geometry.shape == "two circles" && geometry.center.empty())
+        center[0] = 0.35;
+      return center;
+    }
+
+
+
+    template <int dim>
     std::unique_ptr<Function<dim>>
     create_signed_distance(const GeometryParameters &geometry)
     {
-      const std::string &shape = geometry.shape;
-      Point<dim> center = to_point<dim>(geometry.center,
-                                        shape == "quarter circle" ? 0.0 : 0.5,
-                                        "Geometry / Center");
-      if (shape == "two circles" && geometry.center.empty())
-        center[0] = 0.35;
-      const double r = geometry.radius;
+      const std::string &shape  = geometry.shape;
+      const Point<dim>   center = shape_center<dim>(geometry);
+      const double       r      = geometry.radius;
       if (!(r > 0) && (shape == "circle" || shape == "quarter circle" ||
                        shape == "sphere" || shape == "two circles"))
         throw InputError("<Geometry / Radius> must be positive.");
@@ -278,6 +289,10 @@ namespace PhaseField
     create_signed_distance<2>(const GeometryParameters &);
     template std::unique_ptr<Function<3>>
     create_signed_distance<3>(const GeometryParameters &);
+    template Point<2>
+    shape_center<2>(const GeometryParameters &);
+    template Point<3>
+    shape_center<3>(const GeometryParameters &);
     template class PhaseFieldProfile<2>;
     template class PhaseFieldProfile<3>;
     template class SphereDistance<2>;

@@ -306,12 +306,8 @@ namespace PhaseField
     const double radius = Shapes::exact_radius(prm.geometry, dim, time);
     if (radius < 0)
       return std::numeric_limits<double>::quiet_NaN();
-    Point<dim> center;
-    const bool quarter = prm.geometry.shape == "quarter circle";
-    for (unsigned int d = 0; d < dim; ++d)
-      center[d] = prm.geometry.center.empty() ? (quarter ? 0. : 0.5) :
-                                                prm.geometry.center[d];
-    const Shapes::SphereDistance<dim>    distance(center, radius);
+    const Shapes::SphereDistance<dim> distance(
+      Shapes::shape_center<dim>(prm.geometry), radius);
     const Shapes::PhaseFieldProfile<dim> exact(distance, prm.model.epsilon);
 
     Vector u(operators.locally_owned_dofs,

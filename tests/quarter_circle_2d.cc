@@ -36,14 +36,7 @@ subsection Output
 end
 )",
                                                header);
-  Testing::print_columns(rows,
-                         header,
-                         {"step",
-                          "newton_iterations",
-                          "willmore_energy",
-                          "area_energy",
-                          "inside_measure",
-                          "l2_error"});
+  Testing::print_columns(rows, header, Testing::checked_columns());
 
   const double pi = M_PI;
   bool         ok = true;

@@ -95,6 +95,19 @@ namespace Testing
     return read_csv("results/statistics.csv", header);
   }
 
+  /** The statistics.csv columns that the program tests compare. */
+  inline const std::vector<std::string> &
+  checked_columns()
+  {
+    static const std::vector<std::string> columns = {"step",
+                                                     "newton_iterations",
+                                                     "willmore_energy",
+                                                     "area_energy",
+                                                     "inside_measure",
+                                                     "l2_error"};
+    return columns;
+  }
+
   /** Print the named columns of @p rows with 6 significant digits. */
   inline void
   print_columns(const std::vector<std::vector<double>> &rows,

@@ -25,6 +25,15 @@ namespace PhaseField
     create_signed_distance(const GeometryParameters &geometry);
 
     /**
+     * The centre of the shape: `Geometry / Center`, or if that is empty the
+     * centre of the unit cell, the origin for `quarter circle` and
+     * (0.35, 0.5, ...) for `two circles`.
+     */
+    template <int dim>
+    dealii::Point<dim>
+    shape_center(const GeometryParameters &geometry);
+
+    /**
      * The radius of the exact evolution at time @p t if one is known:
      * circles (and quarter circles) in 2D grow as r(t) = (2t + r0^4)^(1/4)
      * under Willmore flow, spheres in 3D are stationary. Returns a negative
