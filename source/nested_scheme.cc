@@ -51,10 +51,12 @@ namespace PhaseField
     const LinearSolverType type,
     const double           relative_tolerance,
     const unsigned int     max_iterations,
+    const bool             symmetric,
     const unsigned int     refactorization_threshold)
     : solver_type(type)
     , relative_tolerance(relative_tolerance)
     , max_iterations(max_iterations)
+    , symmetric(symmetric)
     , refactorization_threshold(refactorization_threshold)
     , tolerance(relative_tolerance)
   {
@@ -118,11 +120,52 @@ namespace PhaseField
         amg_data.smoother_sweeps       = 2;
         amg_data.aggregation_threshold = 0.02;
         amg.initialize(matrix, amg_data);
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.solve(matrix, solution, rhs, amg);
+        if (symmetric)
+          {
+            SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+            cg.solve(matrix, solution, rhs, amg);
+          }
+        else
+          {
+            SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                50, /*right_preconditioning=*/true));
+            gmres.solve(matrix, solution, rhs, amg);
+          }
       }
     last_iterations = control.last_step();
     return last_iterations;
+  }
+
+
+
+  template <int dim>
+  Energies
+  phase_field_energies(const LumpedOperators<dim> &         operators,
+                       const TrilinosWrappers::MPI::Vector &u,
+                       const double                         epsilon)
+  {
+    const double *     m         = operators.lumped_mass.begin();
+    const unsigned int n         = u.locally_owned_size();
+    double             potential = 0, inside = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double ui = u.begin()[i];
+        potential += m[i] * DoubleWell::psi(ui);
+        inside += m[i] * 0.5 * (1 - ui);
+      }
+    const MPI_Comm comm   = u.get_mpi_communicator();
+    potential             = Utilities::MPI::sum(potential, comm);
+    inside                = Utilities::MPI::sum(inside, comm);
+    const double gradient = operators.stiffness_product(u);
+
+    Energies e;
+    e.willmore = 0;
+    // 3/4 normalises the tanh profile: Int sech^4 = 4/3 per unit area.
+    e.area           = 0.75 * 0.5 * (epsilon * gradient + potential / epsilon);
+    e.inside_measure = inside;
+    return e;
   }
 
 
@@ -383,36 +426,41 @@ namespace PhaseField
   Energies
   NestedScheme<dim>::energies(const BlockVector &z) const
   {
-    const double  eps  = coeff.epsilon;
     const double  ttau = coeff.inner_tau;
-    const Vector &u    = z.block(Field::U);
-    const Vector &v    = z.block(Field::V);
-    const double *m    = ops.lumped_mass.begin();
-    const unsigned int n = u.locally_owned_size();
-    double curvature2 = 0, potential = 0, inside = 0;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const double ui = u.begin()[i];
-        curvature2 += m[i] * std::pow((ui - v.begin()[i]) / ttau, 2);
-        potential += m[i] * DoubleWell::psi(ui);
-        inside += m[i] * 0.5 * (1 - ui);
-      }
-    const MPI_Comm comm = u.get_mpi_communicator();
-    curvature2          = Utilities::MPI::sum(curvature2, comm);
-    potential           = Utilities::MPI::sum(potential, comm);
-    inside              = Utilities::MPI::sum(inside, comm);
-    const double gradient = ops.stiffness_product(u);
+    Vector        curvature(z.block(Field::U));
+    curvature -= z.block(Field::V);
+    curvature /= ttau;
 
-    Energies e;
-    // 3/4 normalises the tanh profile: Int sech^4 = 4/3 per unit area.
-    e.willmore       = 0.75 * 0.5 * eps * curvature2;
-    e.area           = 0.75 * 0.5 * (eps * gradient + potential / eps);
-    e.inside_measure = inside;
+    Energies e = phase_field_energies(ops, z.block(Field::U), coeff.epsilon);
+    // 3/4 normalises the tanh profile, as for the area.
+    e.willmore =
+      0.75 * 0.5 * coeff.epsilon * ops.mass_product(curvature, curvature);
     return e;
+  }
+
+
+
+  template <int dim>
+  double
+  NestedScheme<dim>::term_scale(const BlockVector &z) const
+  {
+    Vector difference(z.block(Field::V));
+    difference -= z.block(Field::U);
+    return std::sqrt(ops.mass_product(z.block(Field::U), z.block(Field::U))) +
+           coeff.a() * std::sqrt(ops.mass_product(difference, difference)) +
+           std::sqrt(ops.mass_product(z.block(Field::P), z.block(Field::P)));
   }
 
 
 
   template class NestedScheme<2>;
   template class NestedScheme<3>;
+  template Energies
+  phase_field_energies(const LumpedOperators<2> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const double);
+  template Energies
+  phase_field_energies(const LumpedOperators<3> &,
+                       const TrilinosWrappers::MPI::Vector &,
+                       const double);
 } // namespace PhaseField

@@ -215,10 +215,13 @@ namespace PhaseField
     prm.enter_subsection("Time stepping");
     prm.declare_entry("Scheme",
                       "nested",
-                      Patterns::Selection("nested"),
+                      Patterns::Selection("nested|semi-implicit"),
                       "nested: the nested variational time discretization "
                       "(thesis chapter 3), Newton on the (U,V,P) "
-                      "saddle-point system.");
+                      "saddle-point system. semi-implicit: the Du-Liu-Wang "
+                      "scheme (thesis section 5.2), Newton on (U,F) with "
+                      "F = eps Lap U + (2/eps) U(1-U^2); it does not use "
+                      "Inner tau.");
     prm.declare_entry("Tau",
                       "h^2",
                       Patterns::Anything(),
@@ -245,7 +248,8 @@ namespace PhaseField
     epsilon_expression = prm.get("Epsilon");
     prm.leave_subsection();
     prm.enter_subsection("Time stepping");
-    scheme               = Scheme::nested;
+    scheme = prm.get("Scheme") == "semi-implicit" ? Scheme::semi_implicit :
+                                                     Scheme::nested;
     tau_expression       = prm.get("Tau");
     inner_tau_expression = prm.get("Inner tau");
     n_steps              = prm.get_integer("Number of steps");

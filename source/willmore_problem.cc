@@ -10,6 +10,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <phasefield/narrow_band.h>
+#include <phasefield/semi_implicit_scheme.h>
 #include <phasefield/shapes.h>
 #include <phasefield/statistics.h>
 #include <phasefield/willmore_problem.h>
@@ -22,6 +23,34 @@
 namespace PhaseField
 {
   using namespace dealii;
+
+  namespace
+  {
+    /**
+     * The operations of @p system that every scheme provides under the
+     * same names (the residual differs in its arguments).
+     */
+    template <class SchemeType>
+    void
+    connect_scheme(const SchemeType &scheme, NonlinearSystem &system)
+    {
+      using BlockVector = TrilinosWrappers::MPI::BlockVector;
+      system.norm       = [&scheme](const BlockVector &r) {
+        return scheme.residual_norm(r);
+      };
+      system.solve = [&scheme](const BlockVector &  z,
+                               const BlockVector &  r,
+                               BlockVector &        dz,
+                               ReducedSystemSolver &solver) {
+        return scheme.solve_newton_system(z, r, dz, solver);
+      };
+      system.term_scale = [&scheme](const BlockVector &z) {
+        return scheme.term_scale(z);
+      };
+    }
+  } // namespace
+
+
 
   template <int dim>
   WillmoreProblem<dim>::WillmoreProblem(const WillmoreParameters &parameters)
@@ -46,10 +75,21 @@ namespace PhaseField
     if (type == LinearSolverType::automatic)
       type = (dim == 2 ? LinearSolverType::direct :
                          LinearSolverType::iterative);
-    linear_solver =
-      std::make_unique<ReducedSystemSolver>(type,
-                                            prm.linear_solver.relative_tolerance,
-                                            prm.linear_solver.max_iterations);
+    // the semi-implicit scheme's Jacobian is not symmetric
+    linear_solver = std::make_unique<ReducedSystemSolver>(
+      type,
+      prm.linear_solver.relative_tolerance,
+      prm.linear_solver.max_iterations,
+      /*symmetric=*/prm.model.scheme == Scheme::nested);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  WillmoreProblem<dim>::n_fields() const
+  {
+    return prm.model.scheme == Scheme::nested ? 3 : 2;
   }
 
 
@@ -106,7 +146,7 @@ namespace PhaseField
     operators.reinit(dof_handler, constraints, mpi_communicator);
     linear_solver->reset();
     reinit_vector(solution);
-    old_u.reinit(operators.locally_owned_dofs, mpi_communicator);
+    reinit_vector(old_solution);
   }
 
 
@@ -115,7 +155,7 @@ namespace PhaseField
   void
   WillmoreProblem<dim>::reinit_vector(BlockVector &v) const
   {
-    v.reinit(std::vector<IndexSet>(3, operators.locally_owned_dofs),
+    v.reinit(std::vector<IndexSet>(n_fields(), operators.locally_owned_dofs),
              mpi_communicator);
   }
 
@@ -125,7 +165,7 @@ namespace PhaseField
   void
   WillmoreProblem<dim>::distribute_constraints(BlockVector &v) const
   {
-    for (unsigned int b = 0; b < 3; ++b)
+    for (unsigned int b = 0; b < v.n_blocks(); ++b)
       constraints.distribute(v.block(b));
   }
 
@@ -139,12 +179,25 @@ namespace PhaseField
     const Shapes::PhaseFieldProfile<dim> u0(*signed_distance,
                                             prm.model.epsilon);
     VectorTools::interpolate(dof_handler, u0, solution.block(Field::U));
-    const NestedScheme<dim> scheme(operators, coefficients(prm.model.tau));
-    // its own solver: the factorisations of K are no use for S later
-    ReducedSystemSolver solver(linear_solver->type(),
-                               prm.linear_solver.relative_tolerance,
-                               prm.linear_solver.max_iterations);
-    scheme.initialize_v_and_p(solution, solver, 1e-10);
+    if (prm.model.scheme == Scheme::nested)
+      {
+        const NestedScheme<dim> scheme(operators,
+                                       coefficients(prm.model.tau));
+        // its own solver: the factorisations of K are no use for S later
+        ReducedSystemSolver  solver(linear_solver->type(),
+                                   prm.linear_solver.relative_tolerance,
+                                   prm.linear_solver.max_iterations);
+        constexpr double initialization_tolerance = 1e-10;
+        scheme.initialize_v_and_p(solution, solver, initialization_tolerance);
+      }
+    else
+      {
+        const SemiImplicitScheme<dim> scheme(operators,
+                                             prm.model.epsilon,
+                                             prm.model.tau,
+                                             solution);
+        scheme.initialize_f(solution);
+      }
     distribute_constraints(solution);
   }
 
@@ -154,103 +207,76 @@ namespace PhaseField
   StepReport
   WillmoreProblem<dim>::solve_time_step(const double tau)
   {
-    TimerOutput::Scope      t(computing_timer, "newton");
-    const NestedScheme<dim> scheme(operators, coefficients(tau));
-    const auto &            newton = prm.newton;
-
-    BlockVector residual, update, trial;
-    reinit_vector(residual);
-    reinit_vector(update);
-    reinit_vector(trial);
-
-    // Scale of the terms of the residual, so that the absolute tolerance
-    // is relative to round-off: ||U|| + a ||V-U|| + ||P|| in L2.
-    const auto term_scale = [&](const BlockVector &z) {
-      Vector difference(z.block(Field::V));
-      difference -= z.block(Field::U);
-      return std::sqrt(operators.mass_product(z.block(Field::U),
-                                              z.block(Field::U))) +
-             scheme.coefficients().a() *
-               std::sqrt(operators.mass_product(difference, difference)) +
-             std::sqrt(operators.mass_product(z.block(Field::P),
-                                              z.block(Field::P)));
+    TimerOutput::Scope t(computing_timer, "newton");
+    NonlinearSystem    system;
+    system.distribute_constraints = [this](BlockVector &z) {
+      distribute_constraints(z);
     };
-
-    constexpr double first_linear_tolerance = 1e-3;
-    StepReport       report;
-    scheme.residual(old_u, solution, residual);
-    double       norm       = scheme.residual_norm(residual);
-    const double norm0      = norm;
-    const double target     = std::max(newton.relative_tolerance * norm0,
-                                   newton.absolute_tolerance *
-                                     term_scale(solution));
-    report.final_residual_norm = norm;
-    if (prm.output.verbose)
-      pcout << "    Newton 0: residual " << norm << " (target " << target
-            << ')' << std::endl;
-    if (!std::isfinite(norm))
-      return report;
-    if (norm <= target)
+    // The scheme objects are captured by the closures; they live until
+    // newton_solve() returns.
+    if (prm.model.scheme == Scheme::nested)
       {
-        report.converged = true;
-        return report;
+        const NestedScheme<dim> scheme(operators, coefficients(tau));
+        const Vector &          old_u = old_solution.block(Field::U);
+        system.residual = [&](const BlockVector &z, BlockVector &r) {
+          scheme.residual(old_u, z, r);
+        };
+        connect_scheme(scheme, system);
+        return newton_solve(system,
+                            solution,
+                            prm.newton,
+                            *linear_solver,
+                            pcout,
+                            prm.output.verbose);
       }
 
-    for (unsigned int it = 1; it <= newton.max_iterations; ++it)
-      {
-        // Inexact Newton: the first update needs little accuracy (the
-        // nonlinearity limits its gain anyway); later ones are solved just
-        // accurately enough to reach the target in one more iteration.
-        linear_solver->set_tolerance(
-          it == 1 ? first_linear_tolerance :
-                    std::min(first_linear_tolerance, 0.05 * target / norm));
-        const unsigned int linear_iterations =
-          scheme.solve_newton_system(solution, residual, update, *linear_solver);
-        report.linear_iterations += linear_iterations;
-        report.newton_iterations = it;
+    const SemiImplicitScheme<dim> scheme(operators,
+                                         prm.model.epsilon,
+                                         tau,
+                                         old_solution);
+    system.residual = [&](const BlockVector &z, BlockVector &r) {
+      scheme.residual(z, r);
+    };
+    connect_scheme(scheme, system);
+    return newton_solve(
+      system, solution, prm.newton, *linear_solver, pcout, prm.output.verbose);
+  }
 
-        double       lambda     = 1;
-        double       trial_norm = std::numeric_limits<double>::quiet_NaN();
-        unsigned int damping    = 0;
-        for (; damping <= newton.max_damping_steps; ++damping, lambda *= 0.5)
-          {
-            trial = solution;
-            trial.add(lambda, update);
-            distribute_constraints(trial);
-            scheme.residual(old_u, trial, residual);
-            trial_norm = scheme.residual_norm(residual);
-            if (std::isfinite(trial_norm) &&
-                (trial_norm < norm || trial_norm <= target))
-              break;
-          }
-        if (damping > newton.max_damping_steps)
-          {
-            pcout << "    Newton iteration " << it
-                  << ": no damped update reduces the residual (residual "
-                  << norm << ")." << std::endl;
-            return report;
-          }
-        if (damping > 0)
-          pcout << "    Newton iteration " << it << ": update damped by "
-                << lambda << std::endl;
-        solution = trial;
-        norm     = trial_norm;
-        report.final_residual_norm = norm;
-        if (prm.output.verbose)
-          pcout << "    Newton " << it << ": residual " << norm << " ("
-                << linear_iterations << " linear iterations, "
-                << linear_solver->n_factorizations() << " factorizations)"
-                << std::endl;
-        if (norm <= target)
-          {
-            report.converged = true;
-            return report;
-          }
+
+
+  template <int dim>
+  Energies
+  WillmoreProblem<dim>::compute_energies() const
+  {
+    if (prm.model.scheme == Scheme::nested)
+      return NestedScheme<dim>(operators, coefficients(prm.model.tau))
+        .energies(solution);
+    return SemiImplicitScheme<dim>(operators,
+                                   prm.model.epsilon,
+                                   prm.model.tau,
+                                   old_solution)
+      .energies(solution);
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::compute_curvature(Vector &curvature) const
+  {
+    if (prm.model.scheme == Scheme::nested)
+      {
+        // (U - V) / inner tau
+        curvature = solution.block(Field::U);
+        curvature -= solution.block(Field::V);
+        curvature /= prm.model.inner_tau;
       }
-    pcout << "    Newton did not reach the tolerance in "
-          << newton.max_iterations << " iterations (residual " << norm
-          << ", target " << target << ")." << std::endl;
-    return report;
+    else
+      {
+        // -F / eps, the same quantity (see SemiImplicitScheme)
+        curvature = solution.block(SemiImplicitField::F);
+        curvature /= -prm.model.epsilon;
+      }
   }
 
 
@@ -260,8 +286,8 @@ namespace PhaseField
   WillmoreProblem<dim>::refine_mesh()
   {
     TimerOutput::Scope t(computing_timer, "mesh: adapt");
-    std::vector<Vector> ghosted(3);
-    for (unsigned int b = 0; b < 3; ++b)
+    std::vector<Vector> ghosted(n_fields());
+    for (unsigned int b = 0; b < n_fields(); ++b)
       {
         ghosted[b].reinit(operators.locally_owned_dofs,
                           operators.locally_relevant_dofs,
@@ -285,14 +311,16 @@ namespace PhaseField
       return;
 
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
-    std::vector<const Vector *> in = {&ghosted[0], &ghosted[1], &ghosted[2]};
+    std::vector<const Vector *> in;
+    for (const auto &g : ghosted)
+      in.push_back(&g);
     transfer.prepare_for_coarsening_and_refinement(in);
     triangulation.execute_coarsening_and_refinement();
 
     setup_system();
-    std::vector<Vector *> out = {&solution.block(0),
-                                 &solution.block(1),
-                                 &solution.block(2)};
+    std::vector<Vector *> out;
+    for (unsigned int b = 0; b < n_fields(); ++b)
+      out.push_back(&solution.block(b));
     transfer.interpolate(out);
     distribute_constraints(solution);
   }
@@ -334,24 +362,25 @@ namespace PhaseField
                                        const double       time)
   {
     TimerOutput::Scope  t(computing_timer, "output");
-    std::vector<Vector> fields(4);
+    const std::vector<std::string> names =
+      prm.model.scheme == Scheme::nested ?
+        std::vector<std::string>{"U", "V", "P", "curvature"} :
+        std::vector<std::string>{"U", "F", "curvature"};
+    std::vector<Vector> fields(names.size());
     for (auto &f : fields)
       f.reinit(operators.locally_owned_dofs,
                operators.locally_relevant_dofs,
                mpi_communicator);
-    Vector curvature(solution.block(Field::U));
-    curvature -= solution.block(Field::V);
-    curvature /= prm.model.inner_tau;
-    for (unsigned int b = 0; b < 3; ++b)
+    for (unsigned int b = 0; b < n_fields(); ++b)
       fields[b] = solution.block(b);
-    fields[3] = curvature;
+    Vector curvature(solution.block(Field::U));
+    compute_curvature(curvature);
+    fields.back() = curvature;
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(fields[0], "U");
-    data_out.add_data_vector(fields[1], "V");
-    data_out.add_data_vector(fields[2], "P");
-    data_out.add_data_vector(fields[3], "curvature");
+    for (unsigned int i = 0; i < fields.size(); ++i)
+      data_out.add_data_vector(fields[i], names[i]);
     dealii::Vector<float> subdomain(triangulation.n_active_cells());
     dealii::Vector<float> level(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -390,8 +419,9 @@ namespace PhaseField
     MPI_Barrier(mpi_communicator);
 
     const double h = prm.mesh.h();
-    pcout << "willmore_flow: " << dim << "D, shape <" << prm.geometry.shape
-          << ">, h = " << h << ", epsilon = " << prm.model.epsilon
+    pcout << "willmore_flow: " << dim << "D, "
+          << (prm.model.scheme == Scheme::nested ? "nested" : "semi-implicit")
+          << " scheme, shape <" << prm.geometry.shape << ">, h = " << h << ", epsilon = " << prm.model.epsilon
           << ", tau = " << prm.model.tau
           << ", inner tau = " << prm.model.inner_tau << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
@@ -400,7 +430,8 @@ namespace PhaseField
                 "direct (MUMPS)" :
                 "iterative (CG + AMG)")
           << " linear solver" << std::endl;
-    if (prm.model.inner_tau >= 0.5 * std::pow(prm.model.epsilon, 2))
+    if (prm.model.scheme == Scheme::nested &&
+        prm.model.inner_tau >= 0.5 * std::pow(prm.model.epsilon, 2))
       pcout << "Warning: Inner tau >= epsilon^2/2; the inner (Allen-Cahn) "
                "energy is then not convex and Newton may fail."
             << std::endl;
@@ -429,10 +460,9 @@ namespace PhaseField
     const auto record = [&](const unsigned int step,
                             const StepReport & report,
                             const double       tau) {
-      const NestedScheme<dim> scheme(operators, coefficients(tau));
-      const Energies          e     = scheme.energies(solution);
+      const Energies          e     = compute_energies();
       const double            error = compute_l2_error(time);
-      const double            dofs  = 3. * dof_handler.n_dofs();
+      const double            dofs  = double(n_fields()) * dof_handler.n_dofs();
       const double            cells = triangulation.n_global_active_cells();
       statistics.add_row({double(step),
                           time,
@@ -466,7 +496,7 @@ namespace PhaseField
 
     for (unsigned int step = 1; step <= prm.model.n_steps; ++step)
       {
-        old_u                   = solution.block(Field::U);
+        old_solution            = solution;
         const BlockVector saved = solution;
         double            tau   = prm.model.tau;
         StepReport        report;

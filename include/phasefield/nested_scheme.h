@@ -74,13 +74,26 @@ namespace PhaseField
   /** Energies of a phase field in geometric units (DESIGN.md section 2). */
   struct Energies
   {
-    /** (3/4) (1/2) eps Int ((U-V)/ttau)^2: pi/r for a circle. */
+    /**
+     * (3/4) (1/2) eps Int ((U-V)/ttau)^2 (nested scheme) or
+     * (3/4) w_eps[U] (semi-implicit scheme): pi/r for a circle.
+     */
     double willmore;
     /** (3/4) a_eps[U]: the perimeter / surface area. */
     double area;
     /** Int (1-U)/2: the measure of the inside phase. */
     double inside_measure;
   };
+
+  /**
+   * The parts of Energies that depend on U alone: area (3/4) a_eps[U] and
+   * inside measure; the Willmore energy is left at zero.
+   */
+  template <int dim>
+  Energies
+  phase_field_energies(const LumpedOperators<dim> &                 operators,
+                       const dealii::TrilinosWrappers::MPI::Vector &u,
+                       const double                                 epsilon);
 
   /**
    * Solver of the reduced Newton system S dV = r (see
@@ -94,8 +107,8 @@ namespace PhaseField
    * later time steps on the same mesh) cost a few matrix-vector products.
    * Call reset() when the mesh changes.
    *
-   * Iterative: CG with algebraic multigrid (Trilinos ML), memory linear in
-   * the unknowns.
+   * Iterative: CG (GMRES for a non-symmetric matrix) with algebraic
+   * multigrid (Trilinos ML), memory linear in the unknowns.
    */
   class ReducedSystemSolver
   {
@@ -103,6 +116,7 @@ namespace PhaseField
     ReducedSystemSolver(const LinearSolverType type,
                         const double           relative_tolerance,
                         const unsigned int     max_iterations,
+                        const bool             symmetric = true,
                         const unsigned int     refactorization_threshold = 8);
     ~ReducedSystemSolver();
 
@@ -146,6 +160,7 @@ namespace PhaseField
     const LinearSolverType         solver_type;
     const double                   relative_tolerance;
     const unsigned int             max_iterations;
+    const bool                     symmetric;
     const unsigned int             refactorization_threshold;
     double                         tolerance;
     std::unique_ptr<Factorization> factorization;
@@ -200,6 +215,13 @@ namespace PhaseField
     /** sqrt(R^T M^-1 R) summed over the three blocks. */
     double
     residual_norm(const BlockVector &r) const;
+
+    /**
+     * Size of the terms of R(z) in L2: ||U|| + a ||V-U|| + ||P||, the
+     * reference for an absolute Newton tolerance.
+     */
+    double
+    term_scale(const BlockVector &z) const;
 
     /**
      * Solve J(Z) dZ = -R for the Newton update @p dz. Returns the

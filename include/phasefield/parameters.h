@@ -89,7 +89,10 @@ namespace PhaseField
   /** Time stepping scheme of willmore_flow. */
   enum class Scheme
   {
-    nested
+    /** Nested variational time discretization (thesis chapter 3). */
+    nested,
+    /** Du-Liu-Wang semi-implicit scheme (thesis section 5.2). */
+    semi_implicit
   };
 
   /**

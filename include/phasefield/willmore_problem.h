@@ -17,6 +17,7 @@
 
 #include <phasefield/lumped_operators.h>
 #include <phasefield/nested_scheme.h>
+#include <phasefield/newton_solver.h>
 #include <phasefield/parameters.h>
 
 #include <memory>
@@ -26,23 +27,15 @@
 
 namespace PhaseField
 {
-  /** What one time step of the Newton solver did. */
-  struct StepReport
-  {
-    bool         converged           = false;
-    unsigned int newton_iterations   = 0;
-    unsigned int linear_iterations   = 0;
-    double       final_residual_norm = 0;
-  };
-
   /**
    * Willmore flow of a phase field on an adaptive (narrow-band) mesh of
    * [0,1]^dim, in the shape of the deal.II tutorials: setup_system(),
    * solve_time_step(), refine_mesh(), output_results(), run().
    *
-   * The three fields U, V, P live in one scalar Q1 space and are stored as
-   * the three blocks of a Trilinos block vector; see NestedScheme for the
-   * equations and the Newton system.
+   * The fields live in one scalar Q1 space and are stored as the blocks of
+   * a Trilinos block vector: (U, V, P) for the nested scheme (see
+   * NestedScheme for the equations and the Newton system), (U, F) for the
+   * semi-implicit scheme (SemiImplicitScheme).
    */
   template <int dim>
   class WillmoreProblem
@@ -54,7 +47,7 @@ namespace PhaseField
     void
     run();
 
-    /** The state after run() (U, V, P), e.g. for tests. */
+    /** The state after run() ((U, V, P) or (U, F)), e.g. for tests. */
     const dealii::TrilinosWrappers::MPI::BlockVector &
     state() const
     {
@@ -85,6 +78,15 @@ namespace PhaseField
     output_results(const unsigned int step, const double time);
     NestedCoefficients
     coefficients(const double tau) const;
+    /** Number of fields (blocks) of the selected scheme. */
+    unsigned int
+    n_fields() const;
+    /** Energies of the current state (Willmore energy of the scheme). */
+    Energies
+    compute_energies() const;
+    /** Curvature field of the current state (see output_results()). */
+    void
+    compute_curvature(Vector &curvature) const;
 
     const WillmoreParameters &prm;
     MPI_Comm                  mpi_communicator;
@@ -100,9 +102,9 @@ namespace PhaseField
 
     std::unique_ptr<dealii::Function<dim>> signed_distance;
 
-    /** Current state (U, V, P) and the previous outer state U^k. */
+    /** Current state and the state at the previous time step. */
     BlockVector solution;
-    Vector      old_u;
+    BlockVector old_solution;
 
     std::vector<std::pair<double, std::string>> pvd_records;
   };

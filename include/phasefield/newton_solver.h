@@ -1,0 +1,74 @@
+#ifndef phasefield_newton_solver_h
+#define phasefield_newton_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <phasefield/nested_scheme.h>
+#include <phasefield/parameters.h>
+
+#include <functional>
+
+namespace PhaseField
+{
+  /** What one time step of the Newton solver did. */
+  struct StepReport
+  {
+    bool         converged           = false;
+    unsigned int newton_iterations   = 0;
+    unsigned int linear_iterations   = 0;
+    double       final_residual_norm = 0;
+  };
+
+  /**
+   * One nonlinear system R(Z) = 0 of a time step, as seen by
+   * newton_solve(): the time-stepping schemes (NestedScheme,
+   * SemiImplicitScheme) provide these operations.
+   */
+  struct NonlinearSystem
+  {
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    /** r = R(z). */
+    std::function<void(const BlockVector &z, BlockVector &r)> residual;
+    /** Norm of a residual (the L2 norm of the functions it represents). */
+    std::function<double(const BlockVector &r)> norm;
+    /**
+     * Solve J(z) dz = -r with the linear solver passed to newton_solve();
+     * returns the number of Krylov iterations.
+     */
+    std::function<unsigned int(const BlockVector &  z,
+                               const BlockVector &  r,
+                               BlockVector &        dz,
+                               ReducedSystemSolver &solver)>
+      solve;
+    /** Make a trial state conforming (hanging nodes). */
+    std::function<void(BlockVector &z)> distribute_constraints;
+    /**
+     * Size of the individual terms of R(z), so that the absolute tolerance
+     * is relative to the round-off of the residual evaluation.
+     */
+    std::function<double(const BlockVector &z)> term_scale;
+  };
+
+  /**
+   * Damped inexact Newton method for @p system, starting from and
+   * overwriting @p z. Stops when the residual norm has dropped by
+   * NewtonParameters::relative_tolerance or is below
+   * NewtonParameters::absolute_tolerance times the term scale. The first
+   * linear solve uses a loose relative tolerance, later ones just enough
+   * to reach the target; an update that does not decrease the residual
+   * is halved up to NewtonParameters::max_damping_steps times. On failure
+   * the report says so and @p z holds the last accepted iterate.
+   */
+  StepReport
+  newton_solve(const NonlinearSystem &             system,
+               dealii::TrilinosWrappers::MPI::BlockVector &z,
+               const NewtonParameters &            parameters,
+               ReducedSystemSolver &               linear_solver,
+               const dealii::ConditionalOStream &  pcout,
+               const bool                          verbose);
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,101 @@
+#include <phasefield/newton_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  StepReport
+  newton_solve(const NonlinearSystem &             system,
+               TrilinosWrappers::MPI::BlockVector &z,
+               const NewtonParameters &            parameters,
+               ReducedSystemSolver &               linear_solver,
+               const ConditionalOStream &          pcout,
+               const bool                          verbose)
+  {
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+    BlockVector residual(z), update(z), trial(z);
+
+    // The nonlinearity limits what the first update gains, so it needs
+    // little accuracy; later ones are solved just accurately enough to
+    // reach the target in one more iteration.
+    constexpr double first_linear_tolerance = 1e-3;
+    constexpr double linear_safety_factor   = 0.05;
+
+    StepReport report;
+    system.residual(z, residual);
+    double       norm   = system.norm(residual);
+    const double target = std::max(parameters.relative_tolerance * norm,
+                                   parameters.absolute_tolerance *
+                                     system.term_scale(z));
+    report.final_residual_norm = norm;
+    if (verbose)
+      pcout << "    Newton 0: residual " << norm << " (target " << target
+            << ')' << std::endl;
+    if (!std::isfinite(norm))
+      return report;
+    if (norm <= target)
+      {
+        report.converged = true;
+        return report;
+      }
+
+    for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
+      {
+        linear_solver.set_tolerance(
+          it == 1 ? first_linear_tolerance :
+                    std::min(first_linear_tolerance,
+                             linear_safety_factor * target / norm));
+        const unsigned int linear_iterations =
+          system.solve(z, residual, update, linear_solver);
+        report.linear_iterations += linear_iterations;
+        report.newton_iterations = it;
+
+        double       lambda     = 1;
+        double       trial_norm = std::numeric_limits<double>::quiet_NaN();
+        unsigned int damping    = 0;
+        for (; damping <= parameters.max_damping_steps;
+             ++damping, lambda *= 0.5)
+          {
+            trial = z;
+            trial.add(lambda, update);
+            system.distribute_constraints(trial);
+            system.residual(trial, residual);
+            trial_norm = system.norm(residual);
+            if (std::isfinite(trial_norm) &&
+                (trial_norm < norm || trial_norm <= target))
+              break;
+          }
+        if (damping > parameters.max_damping_steps)
+          {
+            pcout << "    Newton iteration " << it
+                  << ": no damped update reduces the residual (residual "
+                  << norm << ")." << std::endl;
+            return report;
+          }
+        if (damping > 0)
+          pcout << "    Newton iteration " << it << ": update damped by "
+                << lambda << std::endl;
+        z                          = trial;
+        norm                       = trial_norm;
+        report.final_residual_norm = norm;
+        if (verbose)
+          pcout << "    Newton " << it << ": residual " << norm << " ("
+                << linear_iterations << " linear iterations, "
+                << linear_solver.n_factorizations() << " factorizations)"
+                << std::endl;
+        if (norm <= target)
+          {
+            report.converged = true;
+            return report;
+          }
+      }
+    pcout << "    Newton did not reach the tolerance in "
+          << parameters.max_iterations << " iterations (residual " << norm
+          << ", target " << target << ")." << std::endl;
+    return report;
+  }
+} // namespace PhaseField
