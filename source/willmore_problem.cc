@@ -322,6 +322,14 @@ namespace PhaseField
     for (unsigned int b = 0; b < n_fields(); ++b)
       out.push_back(&solution.block(b));
     transfer.interpolate(out);
+    if (prm.model.scheme == Scheme::semi_implicit)
+      // F^k enters the next step's residual: it must be f_h(U^k) on the
+      // new mesh, not an interpolation from the old one
+      SemiImplicitScheme<dim>(operators,
+                              prm.model.epsilon,
+                              prm.model.tau,
+                              solution)
+        .initialize_f(solution);
     distribute_constraints(solution);
   }
 
@@ -506,15 +514,21 @@ namespace PhaseField
             if (report.converged)
               break;
             solution = saved;
-            AssertThrow(attempt < prm.newton.max_step_halvings,
-                        ExcMessage(
-                          "Newton's method did not converge in step " +
-                          std::to_string(step) + " even after halving the "
-                          "time step " +
-                          std::to_string(prm.newton.max_step_halvings) +
-                          " times (tau = " + std::to_string(tau) +
-                          "). Try a smaller <Time stepping / Tau> or a "
-                          "larger <Newton / Maximum iterations>."));
+            AssertThrow(
+              attempt < prm.newton.max_step_halvings,
+              ExcMessage(
+                "Newton's method did not converge in step " +
+                std::to_string(step) +
+                (attempt == 0 ?
+                   std::string(" (retrying with smaller time steps is "
+                               "switched off: Newton / Maximum step "
+                               "halvings = 0)") :
+                   " even after halving the time step " +
+                     std::to_string(attempt) + " times") +
+                " (tau = " + std::to_string(tau) +
+                "). Try a smaller <Time stepping / Tau> or a larger "
+                "<Newton / Maximum iterations>. The statistics and output "
+                "up to the previous step are complete."));
             tau *= 0.5;
             pcout << "  step " << step
                   << ": Newton failed, retrying with half the time step, "
