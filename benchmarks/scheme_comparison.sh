@@ -56,6 +56,7 @@ for level in levels:
         rows = list(csv.DictReader(open(path)))
         ax.plot([float(r["time"]) for r in rows], [float(r["l2_error"]) for r in rows],
                 style, label=f"{scheme}, h = 2^-{level}")
+ax.set_yscale("log")
 ax.set_xlabel("time")
 ax.set_ylabel("L2 error")
 ax.set_title("Quarter circle, eps = 2^-6, tau = inner tau = h^2")
