@@ -436,7 +436,8 @@ namespace PhaseField
           << " MPI rank(s), "
           << (linear_solver->type() == LinearSolverType::direct ?
                 "direct (MUMPS)" :
-                "iterative (CG + AMG)")
+                (prm.model.scheme == Scheme::nested ? "iterative (CG + AMG)" :
+                                                      "iterative (GMRES + AMG)"))
           << " linear solver" << std::endl;
     if (prm.model.scheme == Scheme::nested &&
         prm.model.inner_tau >= 0.5 * std::pow(prm.model.epsilon, 2))
