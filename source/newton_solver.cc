@@ -43,6 +43,12 @@ namespace PhaseField
         return report;
       }
 
+    // Non-monotone "watchdog" step: once per time step a full Newton
+    // update is accepted even if it increases the residual norm by up to
+    // NewtonParameters::watchdog_factor; the norm of the saddle-point
+    // residual is a poor merit function far from the solution, and damping
+    // the first update usually costs two or three extra iterations.
+    bool watchdog_used = false;
     for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
       {
         linear_solver.set_tolerance(
@@ -65,8 +71,10 @@ namespace PhaseField
             system.distribute_constraints(trial);
             system.residual(trial, residual);
             trial_norm = system.norm(residual);
+            const bool watchdog = damping == 0 && !watchdog_used &&
+                                  trial_norm < parameters.watchdog_factor * norm;
             if (std::isfinite(trial_norm) &&
-                (trial_norm < norm || trial_norm <= target))
+                (trial_norm < norm || trial_norm <= target || watchdog))
               break;
           }
         if (damping > parameters.max_damping_steps)
@@ -79,6 +87,8 @@ namespace PhaseField
         if (damping > 0)
           pcout << "    Newton iteration " << it << ": update damped by "
                 << lambda << std::endl;
+        if (trial_norm >= norm)
+          watchdog_used = true;
         z                          = trial;
         norm                       = trial_norm;
         report.final_residual_norm = norm;

@@ -307,6 +307,14 @@ namespace PhaseField
                       Patterns::Integer(0),
                       "How often one Newton update may be halved when it "
                       "does not reduce the residual.");
+    prm.declare_entry("Watchdog factor",
+                      "10",
+                      Patterns::Double(1.),
+                      "Once per time step, a full Newton update is accepted "
+                      "even if it increases the residual norm, by up to this "
+                      "factor (a non-monotone watchdog step); otherwise an "
+                      "update that does not decrease the norm is damped. "
+                      "1: always monotone.");
     prm.declare_entry("Maximum step halvings",
                       "4",
                       Patterns::Integer(0),
@@ -326,6 +334,7 @@ namespace PhaseField
     max_iterations     = prm.get_integer("Maximum iterations");
     max_damping_steps  = prm.get_integer("Maximum damping steps");
     max_step_halvings  = prm.get_integer("Maximum step halvings");
+    watchdog_factor    = prm.get_double("Watchdog factor");
     prm.leave_subsection();
   }
 

@@ -131,6 +131,11 @@ namespace PhaseField
     unsigned int max_iterations;
     /** Backtracking halvings of one Newton update before giving up. */
     unsigned int max_damping_steps;
+    /**
+     * Once per time step a full update may increase the residual norm by
+     * up to this factor (1: always monotone).
+     */
+    double watchdog_factor;
     /** How often a failed time step may be retried with half the step. */
     unsigned int max_step_halvings;
 
