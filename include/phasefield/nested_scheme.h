@@ -211,6 +211,33 @@ namespace PhaseField
                         BlockVector &              dz,
                         ReducedSystemSolver &solver) const;
 
+    /**
+     * The two matrices of the reduced Newton system at a state: K(V) and
+     * the Schur complement S (see the class documentation). For the
+     * biharmonic model (no double well) both are independent of the state,
+     * so they can be built once per mesh and reused in every time step.
+     */
+    struct ReducedMatrices
+    {
+      dealii::TrilinosWrappers::SparseMatrix k;
+      dealii::TrilinosWrappers::SparseMatrix s;
+    };
+
+    /** Build K(V) and S at the state @p z. */
+    void
+    build_reduced_matrices(const BlockVector &z, ReducedMatrices &matrices) const;
+
+    /**
+     * Solve J dZ = -R with matrices built by build_reduced_matrices()
+     * (possibly at an earlier state, which is exact when they do not
+     * depend on the state). Returns the iterations of the linear solver.
+     */
+    unsigned int
+    solve_newton_system(const ReducedMatrices &matrices,
+                        const BlockVector &    r,
+                        BlockVector &          dz,
+                        ReducedSystemSolver &  solver) const;
+
     /** y = J(Z) x: the Jacobian applied to a vector (used by tests). */
     void
     jacobian_vmult(const BlockVector &z,
