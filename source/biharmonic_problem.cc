@@ -23,8 +23,8 @@ namespace PhaseField
   {
     namespace
     {
-      /** Growth rate of the Dirichlet solution (Lemma 4.5: e^{20t}). */
-      constexpr double dirichlet_growth_rate = 20;
+      /** Growth rate of the forced solutions (Lemma 4.5: e^{20t} - 1). */
+      constexpr double growth_rate = 20;
 
       /** g(s) = s^4 - 2s^3 + s and its derivatives (Lemma 4.5). */
       double
@@ -44,10 +44,12 @@ namespace PhaseField
       }
       constexpr double d4_g = 24;
 
-      /** prod_{i not in skip} g(x_i). */
+      /** prod_{i != skip1, skip2} g(x_i). */
       template <int dim>
       double
-      product_of_g(const Point<dim> &p, const int skip1 = -1, const int skip2 = -1)
+      product_of_g(const Point<dim> &p,
+                   const int         skip1 = -1,
+                   const int         skip2 = -1)
       {
         double product = 1;
         for (int i = 0; i < dim; ++i)
@@ -56,71 +58,60 @@ namespace PhaseField
         return product;
       }
 
-      /** Lemma 4.5: u = (e^{20t} - 1) prod_i g(x_i). */
+      /** phi = prod_i g(x_i) (Lemma 4.5): phi = Lap phi = 0 on the boundary. */
       template <int dim>
-      class DirichletSolution : public Function<dim>
+      class ProductOfG : public Function<dim>
       {
       public:
         double
         value(const Point<dim> &p, const unsigned int = 0) const override
         {
-          return amplitude() * product_of_g(p);
+          return product_of_g(p);
         }
         Tensor<1, dim>
         gradient(const Point<dim> &p, const unsigned int = 0) const override
         {
           Tensor<1, dim> grad;
           for (int i = 0; i < dim; ++i)
-            grad[i] = amplitude() * d_g(p[i]) * product_of_g(p, i);
+            grad[i] = d_g(p[i]) * product_of_g(p, i);
           return grad;
-        }
-
-      private:
-        double
-        amplitude() const
-        {
-          return std::expm1(dirichlet_growth_rate * this->get_time());
         }
       };
 
       /**
-       * Lemma 4.5: f = d_t u + Lap^2 u with
        * Lap^2 prod g = sum_i g'''' prod_{j != i} g
        *              + 2 sum_{i<j} g''(x_i) g''(x_j) prod_{k != i,j} g.
        */
       template <int dim>
-      class DirichletForcing : public Function<dim>
+      class BilaplacianOfProductOfG : public Function<dim>
       {
       public:
         double
         value(const Point<dim> &p, const unsigned int = 0) const override
         {
-          const double t = this->get_time();
-          double       bilaplacian = 0;
+          double result = 0;
           for (int i = 0; i < dim; ++i)
             {
-              bilaplacian += d4_g * product_of_g(p, i);
+              result += d4_g * product_of_g(p, i);
               for (int j = i + 1; j < dim; ++j)
-                bilaplacian +=
-                  2 * d2_g(p[i]) * d2_g(p[j]) * product_of_g(p, i, j);
+                result += 2 * d2_g(p[i]) * d2_g(p[j]) * product_of_g(p, i, j);
             }
-          return dirichlet_growth_rate *
-                   std::exp(dirichlet_growth_rate * t) * product_of_g(p) +
-                 std::expm1(dirichlet_growth_rate * t) * bilaplacian;
+          return result;
         }
       };
 
       /**
-       * u = e^{-k^4 t} sum_i cos(k x_i), which solves d_t u + Lap^2 u = 0;
-       * d_n u = d_n Lap u = 0 on the boundary of the unit cube for
-       * k = pi (Lemma 7.2), periodic on the unit cell for k = 2 pi.
+       * factor * sum_i cos(k x_i), an eigenfunction of Lap^2 with
+       * eigenvalue k^4; d_n phi = d_n Lap phi = 0 on the boundary of the
+       * unit cube for k = pi, periodic on the unit cell for k = 2 pi.
        */
       template <int dim>
-      class CosineSolution : public Function<dim>
+      class CosineSum : public Function<dim>
       {
       public:
-        explicit CosineSolution(const double wave_number)
+        CosineSum(const double wave_number, const double factor = 1)
           : k(wave_number)
+          , factor(factor)
         {}
         double
         value(const Point<dim> &p, const unsigned int = 0) const override
@@ -128,55 +119,118 @@ namespace PhaseField
           double sum = 0;
           for (int i = 0; i < dim; ++i)
             sum += std::cos(k * p[i]);
-          return decay() * sum;
+          return factor * sum;
         }
         Tensor<1, dim>
         gradient(const Point<dim> &p, const unsigned int = 0) const override
         {
           Tensor<1, dim> grad;
           for (int i = 0; i < dim; ++i)
-            grad[i] = -k * decay() * std::sin(k * p[i]);
+            grad[i] = -factor * k * std::sin(k * p[i]);
           return grad;
         }
 
       private:
-        double
-        decay() const
-        {
-          return std::exp(-std::pow(k, 4) * this->get_time());
-        }
         const double k;
+        const double factor;
+      };
+
+      /** u = A(t) phi(x) as a Function (value and gradient). */
+      template <int dim>
+      class SeparatedFunction : public Function<dim>
+      {
+      public:
+        explicit SeparatedFunction(const SeparatedSolution<dim> &solution)
+          : solution(solution)
+        {}
+        double
+        value(const Point<dim> &p, const unsigned int = 0) const override
+        {
+          return solution.amplitude(this->get_time()) *
+                 solution.shape->value(p);
+        }
+        Tensor<1, dim>
+        gradient(const Point<dim> &p, const unsigned int = 0) const override
+        {
+          return solution.amplitude(this->get_time()) *
+                 solution.shape->gradient(p);
+        }
+
+      private:
+        const SeparatedSolution<dim> &solution;
       };
     } // namespace
 
 
 
     template <int dim>
-    std::unique_ptr<Function<dim>>
+    SeparatedSolution<dim>
     exact_solution(const BiharmonicBoundaryConditions bc)
     {
+      SeparatedSolution<dim> s;
+      const auto growing = [](const double t) {
+        return std::expm1(growth_rate * t);
+      };
+      const auto growing_derivative = [](const double t) {
+        return growth_rate * std::exp(growth_rate * t);
+      };
       switch (bc)
         {
           case BiharmonicBoundaryConditions::dirichlet:
-            return std::make_unique<DirichletSolution<dim>>();
+            s.amplitude            = growing;
+            s.amplitude_derivative = growing_derivative;
+            s.shape                = std::make_unique<ProductOfG<dim>>();
+            s.shape_bilaplacian =
+              std::make_unique<BilaplacianOfProductOfG<dim>>();
+            s.forced = true;
+            break;
           case BiharmonicBoundaryConditions::neumann:
-            return std::make_unique<CosineSolution<dim>>(numbers::PI);
+            {
+              const double k  = numbers::PI;
+              const double k4 = std::pow(k, 4);
+              s.amplitude     = [k4](const double t) {
+                return std::exp(-k4 * t);
+              };
+              s.amplitude_derivative = [k4](const double t) {
+                return -k4 * std::exp(-k4 * t);
+              };
+              s.shape = std::make_unique<CosineSum<dim>>(k);
+              s.shape_bilaplacian = std::make_unique<CosineSum<dim>>(k, k4);
+              s.forced            = false;
+              break;
+            }
           case BiharmonicBoundaryConditions::periodic:
-            return std::make_unique<CosineSolution<dim>>(2 * numbers::PI);
+            {
+              const double k         = 2 * numbers::PI;
+              s.amplitude            = growing;
+              s.amplitude_derivative = growing_derivative;
+              s.shape                = std::make_unique<CosineSum<dim>>(k);
+              s.shape_bilaplacian =
+                std::make_unique<CosineSum<dim>>(k, std::pow(k, 4));
+              s.forced = true;
+              break;
+            }
         }
-      return nullptr;
+      return s;
     }
 
 
 
     template <int dim>
     std::unique_ptr<Function<dim>>
-    forcing(const BiharmonicBoundaryConditions bc)
+    SeparatedSolution<dim>::function() const
     {
-      if (bc == BiharmonicBoundaryConditions::dirichlet)
-        return std::make_unique<DirichletForcing<dim>>();
-      return nullptr;
+      return std::make_unique<SeparatedFunction<dim>>(*this);
     }
+
+
+
+    template struct SeparatedSolution<2>;
+    template struct SeparatedSolution<3>;
+    template SeparatedSolution<2>
+    exact_solution<2>(const BiharmonicBoundaryConditions);
+    template SeparatedSolution<3>
+    exact_solution<3>(const BiharmonicBoundaryConditions);
   } // namespace BiharmonicSolutions
 
 
@@ -215,10 +269,9 @@ namespace PhaseField
         std::make_unique<ReducedSystemSolver>(LinearSolverType::direct,
                                               linear_solver_tolerance,
                                               linear_solver_max_iterations))
-    , exact_solution(BiharmonicSolutions::exact_solution<dim>(
+    , exact(BiharmonicSolutions::exact_solution<dim>(
         parameters.problem.boundary_conditions))
-    , forcing(
-        BiharmonicSolutions::forcing<dim>(parameters.problem.boundary_conditions))
+    , exact_solution(exact.function())
   {
     NestedCoefficients coefficients;
     coefficients.epsilon     = 1;
@@ -287,6 +340,19 @@ namespace PhaseField
                     mpi_communicator);
     old_u.reinit(operators.locally_owned_dofs, mpi_communicator);
     forcing_vector.reinit(operators.locally_owned_dofs, mpi_communicator);
+
+    // The time-independent parts of the nodal forcing M I_h(f).
+    forcing_shape.reinit(forcing_vector);
+    forcing_bilaplacian.reinit(forcing_vector);
+    if (exact.forced)
+      {
+        VectorTools::interpolate(dof_handler, *exact.shape, forcing_shape);
+        VectorTools::interpolate(dof_handler,
+                                 *exact.shape_bilaplacian,
+                                 forcing_bilaplacian);
+        forcing_shape.scale(operators.lumped_mass);
+        forcing_bilaplacian.scale(operators.lumped_mass);
+      }
   }
 
 
@@ -298,7 +364,9 @@ namespace PhaseField
     TimerOutput::Scope t(computing_timer, "assembly and factorisation");
     // K and S do not depend on the state: build them once.
     scheme->build_reduced_matrices(solution, matrices);
-    // Factorise S now (the solver keeps the factorisation).
+    // Factorise S now; the solver keeps the factorisation and, since S
+    // is constant, applies it directly in every time step.
+    linear_solver->set_constant_matrix(true);
     Vector dummy_solution(operators.locally_owned_dofs, mpi_communicator);
     Vector dummy_rhs(dummy_solution);
     linear_solver->solve(matrices.s, dummy_solution, dummy_rhs);
@@ -310,10 +378,13 @@ namespace PhaseField
   void
   BiharmonicProblem<dim>::assemble_forcing(const double time)
   {
-    forcing->set_time(time);
-    VectorTools::interpolate(dof_handler, *forcing, forcing_vector);
-    // M I_h(f); zero at constrained DoFs, where the lumped mass is zero.
-    forcing_vector.scale(operators.lumped_mass);
+    // M I_h(f) = A'(t) M I_h(phi) + A(t) M I_h(Lap^2 phi); zero at
+    // constrained DoFs, where the lumped mass is zero.
+    forcing_vector = 0;
+    forcing_vector.add(exact.amplitude_derivative(time),
+                       forcing_shape,
+                       exact.amplitude(time),
+                       forcing_bilaplacian);
   }
 
 
@@ -322,15 +393,18 @@ namespace PhaseField
   void
   BiharmonicProblem<dim>::solve_time_step(const double time)
   {
-    TimerOutput::Scope t(computing_timer, "time steps");
     old_u = solution.block(Field::U);
-    if (forcing)
+    if (exact.forced)
       assemble_forcing(time);
     BlockVector residual(solution), update(solution);
-    scheme->residual(old_u,
-                     solution,
-                     residual,
-                     forcing ? &forcing_vector : nullptr);
+    {
+      TimerOutput::Scope t(computing_timer, "step: residual");
+      scheme->residual(old_u,
+                       solution,
+                       residual,
+                       exact.forced ? &forcing_vector : nullptr);
+    }
+    TimerOutput::Scope t(computing_timer, "step: solve");
     scheme->solve_newton_system(matrices, residual, update, *linear_solver);
     solution += update;
   }
@@ -340,7 +414,7 @@ namespace PhaseField
   template <int dim>
   void
   BiharmonicProblem<dim>::compute_errors(const double           time,
-                                         BiharmonicLevelResult &result) const
+                                         BiharmonicLevelResult &result)
   {
     TimerOutput::Scope t(computing_timer, "errors");
     Vector u(operators.locally_owned_dofs,
@@ -403,12 +477,14 @@ namespace PhaseField
       scheme->residual(old_u,
                        solution,
                        residual,
-                       forcing ? &forcing_vector : nullptr);
+                       exact.forced ? &forcing_vector : nullptr);
       result.final_residual_norm = scheme->residual_norm(residual);
     }
     result.n_factorizations = linear_solver->n_factorizations();
     compute_errors(time, result);
     result.wall_seconds = wall_timer.wall_time();
+    result.section_seconds =
+      computing_timer.get_summary_data(TimerOutput::total_wall_time);
     return result;
   }
 
@@ -458,8 +534,10 @@ namespace PhaseField
               << " factorisation(s), final residual " << std::setprecision(2)
               << r.final_residual_norm << std::setprecision(6)
               << "; L2 error " << r.l2_error << ", H1 error " << r.h1_error
-              << " [" << std::setprecision(3) << r.wall_seconds << " s]"
-              << std::setprecision(6) << std::endl;
+              << " [" << std::setprecision(3) << r.wall_seconds << " s:";
+        for (const auto &section : r.section_seconds)
+          pcout << ' ' << section.first << ' ' << section.second << " s,";
+        pcout << "]" << std::setprecision(6) << std::endl;
 
         table.add_value("level", r.level);
         table.add_value("cells", std::pow(2., dim * double(r.level)));

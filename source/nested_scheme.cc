@@ -103,6 +103,12 @@ namespace PhaseField
             factorization = std::make_unique<Factorization>(matrix);
             ++factorization_count;
           }
+        else if (constant_matrix)
+          {
+            factorization->vmult(solution, rhs);
+            last_iterations = 1;
+            return last_iterations;
+          }
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(

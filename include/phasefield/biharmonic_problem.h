@@ -19,32 +19,52 @@
 #include <phasefield/lumped_operators.h>
 #include <phasefield/nested_scheme.h>
 
+#include <functional>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace PhaseField
 {
   /**
    * Exact solutions of the biharmonic heat flow d_t u + Lap^2 u = f on
-   * [0,1]^dim, one per boundary condition (thesis Lemma 4.5 and 7.2,
-   * extended to dim = 3 by products and sums):
+   * [0,1]^dim, one per boundary condition, all of the separated form
+   * u(t,x) = A(t) phi(x), so that f = A'(t) phi + A(t) Lap^2 phi:
    *
-   * - dirichlet: u = (e^{20t} - 1) prod_i g(x_i), g(s) = s^4 - 2s^3 + s,
-   *   with f = d_t u + Lap^2 u;
-   * - neumann: u = e^{-pi^4 t} sum_i cos(pi x_i), f = 0;
-   * - periodic: u = e^{-16 pi^4 t} sum_i cos(2 pi x_i), f = 0.
+   * - dirichlet (thesis Lemma 4.5, in 3D with a third factor):
+   *   A = e^{20t} - 1, phi = prod_i g(x_i), g(s) = s^4 - 2s^3 + s;
+   * - neumann (thesis Lemma 7.2): A = e^{-pi^4 t}, phi = sum_i cos(pi x_i),
+   *   f = 0;
+   * - periodic: A = e^{20t} - 1, phi = sum_i cos(2 pi x_i), f =
+   *   (20 e^{20t} + 16 pi^4 (e^{20t} - 1)) phi.
    */
   namespace BiharmonicSolutions
   {
-    /** The exact solution u (value and gradient); set_time() selects t. */
     template <int dim>
-    std::unique_ptr<dealii::Function<dim>>
-    exact_solution(const BiharmonicBoundaryConditions bc);
+    struct SeparatedSolution
+    {
+      /** A(t) and A'(t). */
+      std::function<double(double)> amplitude;
+      std::function<double(double)> amplitude_derivative;
+      /** phi (value and gradient) and Lap^2 phi (value). */
+      std::unique_ptr<dealii::Function<dim>> shape;
+      std::unique_ptr<dealii::Function<dim>> shape_bilaplacian;
+      /** false if f vanishes identically. */
+      bool forced;
 
-    /** The forcing f, or nullptr where it vanishes. */
+      /**
+       * u as a Function (value and gradient; set_time() selects t). It
+       * refers to this object, which must outlive it.
+       */
+      std::unique_ptr<dealii::Function<dim>>
+      function() const;
+    };
+
+    /** The exact solution for the boundary conditions @p bc. */
     template <int dim>
-    std::unique_ptr<dealii::Function<dim>>
-    forcing(const BiharmonicBoundaryConditions bc);
+    SeparatedSolution<dim>
+    exact_solution(const BiharmonicBoundaryConditions bc);
   } // namespace BiharmonicSolutions
 
   /** Result of the computation on one mesh level. */
@@ -65,6 +85,8 @@ namespace PhaseField
     /** LU factorisations of the time-step matrix on this level (1). */
     unsigned int n_factorizations;
     double       wall_seconds;
+    /** Wall time of each section of the computation (TimerOutput). */
+    std::map<std::string, double> section_seconds;
   };
 
   /**
@@ -113,7 +135,7 @@ namespace PhaseField
     void
     solve_time_step(const double time);
     void
-    compute_errors(const double time, BiharmonicLevelResult &result) const;
+    compute_errors(const double time, BiharmonicLevelResult &result);
 
     const BiharmonicParameters &prm;
     const unsigned int          level;
@@ -133,13 +155,16 @@ namespace PhaseField
     typename NestedScheme<dim>::ReducedMatrices       matrices;
     std::unique_ptr<ReducedSystemSolver>              linear_solver;
 
-    std::unique_ptr<dealii::Function<dim>> exact_solution;
-    std::unique_ptr<dealii::Function<dim>> forcing;
+    const BiharmonicSolutions::SeparatedSolution<dim> exact;
+    std::unique_ptr<dealii::Function<dim>>            exact_solution;
 
     /** Current state (U, V, P), previous U^k, nodal forcing M I_h(f). */
     BlockVector solution;
     Vector      old_u;
     Vector      forcing_vector;
+    /** M I_h(phi) and M I_h(Lap^2 phi): forcing_vector = A'(..) + A(..). */
+    Vector forcing_shape;
+    Vector forcing_bilaplacian;
   };
 
   /**

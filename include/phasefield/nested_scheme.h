@@ -127,6 +127,19 @@ namespace PhaseField
     void
     reset();
 
+    /**
+     * Declare whether every following solve() is with the matrix of the
+     * stored factorisation (a linear problem whose matrix is constant on
+     * a mesh). If so, solve() applies the factorisation once instead of
+     * running GMRES with it (the first solve still factorises). Only
+     * meaningful for the direct type.
+     */
+    void
+    set_constant_matrix(const bool constant)
+    {
+      constant_matrix = constant;
+    }
+
     /** Number of LU factorisations computed so far. */
     unsigned int
     n_factorizations() const
@@ -151,6 +164,7 @@ namespace PhaseField
     std::unique_ptr<Factorization> factorization;
     unsigned int                   last_iterations     = 0;
     unsigned int                   factorization_count = 0;
+    bool                           constant_matrix     = false;
   };
 
   /**
