@@ -403,6 +403,7 @@ namespace PhaseField
                        solution,
                        residual,
                        exact.forced ? &forcing_vector : nullptr);
+      initial_residual_norm = scheme->residual_norm(residual);
     }
     TimerOutput::Scope t(computing_timer, "step: solve");
     scheme->solve_newton_system(matrices, residual, update, *linear_solver);
@@ -478,7 +479,8 @@ namespace PhaseField
                        solution,
                        residual,
                        exact.forced ? &forcing_vector : nullptr);
-      result.final_residual_norm = scheme->residual_norm(residual);
+      result.relative_residual =
+        scheme->residual_norm(residual) / initial_residual_norm;
     }
     result.n_factorizations = linear_solver->n_factorizations();
     compute_errors(time, result);
@@ -531,8 +533,8 @@ namespace PhaseField
               << ", inner tau = " << r.inner_tau << ", " << r.n_steps
               << " steps to t = " << r.time << ", " << r.n_dofs
               << " DoFs per field, " << r.n_factorizations
-              << " factorisation(s), final residual " << std::setprecision(2)
-              << r.final_residual_norm << std::setprecision(6)
+              << " factorisation(s), relative residual " << std::setprecision(2)
+              << r.relative_residual << std::setprecision(6)
               << "; L2 error " << r.l2_error << ", H1 error " << r.h1_error
               << " [" << std::setprecision(3) << r.wall_seconds << " s:";
         for (const auto &section : r.section_seconds)

@@ -80,8 +80,12 @@ namespace PhaseField
     double       l2_error;
     /** Error in the full H1 norm (L2 norm and gradient). */
     double       h1_error;
-    /** sqrt(R.M^-1 R) of the three-field residual after the last step. */
-    double       final_residual_norm;
+    /**
+     * Residual norm sqrt(R.M^-1 R) of the three-field system after the
+     * last step relative to the one before its solve (round-off: every
+     * step is solved exactly).
+     */
+    double       relative_residual;
     /** LU factorisations of the time-step matrix on this level (1). */
     unsigned int n_factorizations;
     double       wall_seconds;
@@ -165,6 +169,8 @@ namespace PhaseField
     /** M I_h(phi) and M I_h(Lap^2 phi): forcing_vector = A'(..) + A(..). */
     Vector forcing_shape;
     Vector forcing_bilaplacian;
+    /** Residual norm at the start of the last time step. */
+    double initial_residual_norm = 0;
   };
 
   /**
