@@ -1,7 +1,6 @@
+#include <cmath>
 #include <phasefield/biharmonic_parameters.h>
 #include <phasefield/parameters.h>
-
-#include <cmath>
 
 namespace PhaseField
 {
@@ -100,7 +99,8 @@ namespace PhaseField
   {
     const std::string name = parameter_name("Convergence", "Levels");
     prm.enter_subsection("Convergence");
-    const std::vector<double> values = parse_double_list(prm.get("Levels"), name);
+    const std::vector<double> values =
+      parse_double_list(prm.get("Levels"), name);
     prm.leave_subsection();
 
     if (values.empty())
@@ -129,10 +129,9 @@ namespace PhaseField
   BiharmonicTimeParameters::StepSizes
   BiharmonicTimeParameters::step_sizes(const double h) const
   {
-    const std::string tau_name = parameter_name("Time stepping", "Tau");
-    const std::string inner_name =
-      parameter_name("Time stepping", "Inner tau");
-    const double requested_tau =
+    const std::string tau_name   = parameter_name("Time stepping", "Tau");
+    const std::string inner_name = parameter_name("Time stepping", "Inner tau");
+    const double      requested_tau =
       evaluate_expression_in_h(tau_expression, h, tau_name);
     StepSizes s;
     s.inner_tau = evaluate_expression_in_h(inner_tau_expression, h, inner_name);

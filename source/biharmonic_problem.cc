@@ -1,19 +1,14 @@
+#include <cmath>
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/numerics/vector_tools.h>
-
-#include <phasefield/biharmonic_problem.h>
-#include <phasefield/statistics.h>
-
-#include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <phasefield/biharmonic_problem.h>
+#include <phasefield/statistics.h>
 
 namespace PhaseField
 {
@@ -168,7 +163,7 @@ namespace PhaseField
     exact_solution(const BiharmonicBoundaryConditions bc)
     {
       SeparatedSolution<dim> s;
-      const auto growing = [](const double t) {
+      const auto             growing = [](const double t) {
         return std::expm1(growth_rate * t);
       };
       const auto growing_derivative = [](const double t) {
@@ -184,23 +179,19 @@ namespace PhaseField
               std::make_unique<BilaplacianOfProductOfG<dim>>();
             s.forced = true;
             break;
-          case BiharmonicBoundaryConditions::neumann:
-            {
+            case BiharmonicBoundaryConditions::neumann: {
               const double k  = numbers::PI;
               const double k4 = std::pow(k, 4);
-              s.amplitude     = [k4](const double t) {
-                return std::exp(-k4 * t);
-              };
+              s.amplitude = [k4](const double t) { return std::exp(-k4 * t); };
               s.amplitude_derivative = [k4](const double t) {
                 return -k4 * std::exp(-k4 * t);
               };
-              s.shape = std::make_unique<CosineSum<dim>>(k);
+              s.shape             = std::make_unique<CosineSum<dim>>(k);
               s.shape_bilaplacian = std::make_unique<CosineSum<dim>>(k, k4);
               s.forced            = false;
               break;
             }
-          case BiharmonicBoundaryConditions::periodic:
-            {
+            case BiharmonicBoundaryConditions::periodic: {
               const double k         = 2 * numbers::PI;
               s.amplitude            = growing;
               s.amplitude_derivative = growing_derivative;
@@ -288,8 +279,8 @@ namespace PhaseField
   BiharmonicProblem<dim>::make_grid()
   {
     TimerOutput::Scope t(computing_timer, "mesh");
-    const bool periodic = prm.problem.boundary_conditions ==
-                          BiharmonicBoundaryConditions::periodic;
+    const bool         periodic =
+      prm.problem.boundary_conditions == BiharmonicBoundaryConditions::periodic;
     // colorize: boundary id 2d (x_d = 0) and 2d+1 (x_d = 1)
     GridGenerator::hyper_cube(triangulation, 0., 1., periodic);
     if (periodic)
@@ -418,7 +409,7 @@ namespace PhaseField
                                          BiharmonicLevelResult &result)
   {
     TimerOutput::Scope t(computing_timer, "errors");
-    Vector u(operators.locally_owned_dofs,
+    Vector             u(operators.locally_owned_dofs,
              operators.locally_relevant_dofs,
              mpi_communicator);
     {
@@ -511,15 +502,10 @@ namespace PhaseField
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
           << std::endl;
 
-    StatisticsFile csv(parameters.output_directory + "/convergence.csv",
-                       {"level",
-                        "h",
-                        "tau",
-                        "inner_tau",
-                        "time",
-                        "l2_error",
-                        "h1_error"},
-                       comm);
+    StatisticsFile csv(
+      parameters.output_directory + "/convergence.csv",
+      {"level", "h", "tau", "inner_tau", "time", "l2_error", "h1_error"},
+      comm);
     ConvergenceTable                   table;
     std::vector<BiharmonicLevelResult> results;
     for (const unsigned int level : parameters.convergence.levels)
@@ -527,16 +513,21 @@ namespace PhaseField
         const BiharmonicLevelResult r =
           BiharmonicProblem<dim>(parameters, level).run();
         results.push_back(r);
-        csv.add_row(
-          {double(r.level), r.h, r.tau, r.inner_tau, r.time, r.l2_error, r.h1_error});
+        csv.add_row({double(r.level),
+                     r.h,
+                     r.tau,
+                     r.inner_tau,
+                     r.time,
+                     r.l2_error,
+                     r.h1_error});
         pcout << "level " << r.level << ": h = " << r.h << ", tau = " << r.tau
               << ", inner tau = " << r.inner_tau << ", " << r.n_steps
               << " steps to t = " << r.time << ", " << r.n_dofs
               << " DoFs per field, " << r.n_factorizations
               << " factorisation(s), relative residual " << std::setprecision(2)
-              << r.relative_residual << std::setprecision(6)
-              << "; L2 error " << r.l2_error << ", H1 error " << r.h1_error
-              << " [" << std::setprecision(3) << r.wall_seconds << " s:";
+              << r.relative_residual << std::setprecision(6) << "; L2 error "
+              << r.l2_error << ", H1 error " << r.h1_error << " ["
+              << std::setprecision(3) << r.wall_seconds << " s:";
         for (const auto &section : r.section_seconds)
           pcout << ' ' << section.first << ' ' << section.second << " s,";
         pcout << "]" << std::setprecision(6) << std::endl;

@@ -10,11 +10,10 @@
 //  - tau = ttau = h (Dirichlet): L2 and H1 order 1.
 // The .mpirun=2 variant checks that 2 ranks give the same numbers.
 
-#include <phasefield/biharmonic_problem.h>
-
 #include "tests.h"
 
 #include <cmath>
+#include <phasefield/biharmonic_problem.h>
 
 namespace
 {
@@ -76,26 +75,24 @@ namespace
         Testing::log() << r.level << ' ' << r.n_steps << ' ' << r.l2_error
                        << ' ' << r.h1_error;
         if (i > 0)
-          Testing::log() << ' ' << std::setprecision(3)
-                         << rate(results[i - 1], r,
-                                 results[i - 1].l2_error, r.l2_error)
-                         << ' '
-                         << rate(results[i - 1], r,
-                                 results[i - 1].h1_error, r.h1_error)
-                         << std::setprecision(6);
+          Testing::log()
+            << ' ' << std::setprecision(3)
+            << rate(results[i - 1], r, results[i - 1].l2_error, r.l2_error)
+            << ' '
+            << rate(results[i - 1], r, results[i - 1].h1_error, r.h1_error)
+            << std::setprecision(6);
         Testing::log() << '\n';
         ok = ok && r.n_factorizations == 1 && r.relative_residual < 1e-10;
       }
-    const auto & coarse = results[results.size() - 2];
-    const auto & fine   = results.back();
-    const double l2 = rate(coarse, fine, coarse.l2_error, fine.l2_error);
-    const double h1 = rate(coarse, fine, coarse.h1_error, fine.h1_error);
+    const auto  &coarse = results[results.size() - 2];
+    const auto  &fine   = results.back();
+    const double l2     = rate(coarse, fine, coarse.l2_error, fine.l2_error);
+    const double h1     = rate(coarse, fine, coarse.h1_error, fine.h1_error);
     ok = ok && l2 >= l2_min && l2 <= l2_max && h1 >= h1_min && h1 <= h1_max;
     Testing::log() << "one factorisation per level, steps solved exactly, L2 "
                       "EOC in ["
                    << l2_min << ", " << l2_max << "], H1 EOC in [" << h1_min
-                   << ", " << h1_max << "]: " << (ok ? "yes" : "NO")
-                   << "\n\n";
+                   << ", " << h1_max << "]: " << (ok ? "yes" : "NO") << "\n\n";
     return ok;
   }
 } // namespace

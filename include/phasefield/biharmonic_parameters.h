@@ -2,7 +2,6 @@
 #define phasefield_biharmonic_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 #include <vector>
 
@@ -13,7 +12,8 @@
  */
 namespace PhaseField
 {
-  /** Boundary conditions of the biharmonic heat flow, each with an exact solution. */
+  /** Boundary conditions of the biharmonic heat flow, each with an exact
+   * solution. */
   enum class BiharmonicBoundaryConditions
   {
     /** u = Lap u = 0 on the boundary of [0,1]^d, forcing of Lemma 4.5. */

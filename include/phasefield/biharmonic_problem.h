@@ -4,24 +4,18 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
-
-#include <phasefield/biharmonic_parameters.h>
-#include <phasefield/lumped_operators.h>
-#include <phasefield/nested_scheme.h>
-
 #include <functional>
 #include <map>
 #include <memory>
+#include <phasefield/biharmonic_parameters.h>
+#include <phasefield/lumped_operators.h>
+#include <phasefield/nested_scheme.h>
 #include <string>
 #include <vector>
 
@@ -79,13 +73,13 @@ namespace PhaseField
     unsigned int n_dofs;
     double       l2_error;
     /** Error in the full H1 norm (L2 norm and gradient). */
-    double       h1_error;
+    double h1_error;
     /**
      * Residual norm sqrt(R.M^-1 R) of the three-field system after the
      * last step relative to the one before its solve (round-off: every
      * step is solved exactly).
      */
-    double       relative_residual;
+    double relative_residual;
     /** LU factorisations of the time-step matrix on this level (1). */
     unsigned int n_factorizations;
     double       wall_seconds;
@@ -141,9 +135,9 @@ namespace PhaseField
     void
     compute_errors(const double time, BiharmonicLevelResult &result);
 
-    const BiharmonicParameters &prm;
-    const unsigned int          level;
-    const double                h;
+    const BiharmonicParameters               &prm;
+    const unsigned int                        level;
+    const double                              h;
     const BiharmonicTimeParameters::StepSizes step_sizes;
 
     MPI_Comm                   mpi_communicator;
