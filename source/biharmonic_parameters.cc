@@ -200,14 +200,7 @@ namespace PhaseField
   void
   BiharmonicParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension, 2 or 3.");
-    prm.declare_entry("Output directory",
-                      "output",
-                      Patterns::Anything(),
-                      "Directory for convergence.csv.");
+    declare_common_parameters(prm, "Directory for convergence.csv.");
     BiharmonicProblemParameters::declare_parameters(prm);
     ConvergenceParameters::declare_parameters(prm);
     BiharmonicTimeParameters::declare_parameters(prm);
