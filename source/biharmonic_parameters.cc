@@ -59,7 +59,8 @@ namespace PhaseField
       "Lemma 4.5, u = (e^{20t}-1) prod_i g(x_i), g(s) = s^4-2s^3+s. "
       "neumann: natural boundary conditions d_n u = d_n Lap u = 0, exact "
       "solution e^{-pi^4 t} sum_i cos(pi x_i) (thesis Lemma 7.2). periodic: "
-      "the unit cell, exact solution e^{-16 pi^4 t} sum_i cos(2 pi x_i).");
+      "the unit cell, exact solution (e^{20t}-1) sum_i cos(2 pi x_i) with "
+      "the forcing f = d_t u + Lap^2 u.");
     prm.leave_subsection();
   }
 

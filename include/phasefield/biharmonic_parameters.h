@@ -20,7 +20,8 @@ namespace PhaseField
     dirichlet,
     /** Natural conditions d_n u = d_n Lap u = 0, solution of Lemma 7.2. */
     neumann,
-    /** Periodic on the unit cell. */
+    /** Periodic on the unit cell, forced solution (e^{20t}-1) sum cos(2 pi
+       x_i). */
     periodic
   };
 
