@@ -95,6 +95,13 @@ namespace PhaseField
                           false,
                           false);
     solution = 0;
+    if (solver_type == LinearSolverType::direct && constant_matrix &&
+        factorization && factorization->size() == matrix.m())
+      {
+        factorization->vmult(solution, rhs);
+        last_iterations = 1;
+        return last_iterations;
+      }
     if (solver_type == LinearSolverType::direct)
       {
         if (!factorization || factorization->size() != matrix.m() ||
@@ -102,12 +109,6 @@ namespace PhaseField
           {
             factorization = std::make_unique<Factorization>(matrix);
             ++factorization_count;
-          }
-        else if (constant_matrix)
-          {
-            factorization->vmult(solution, rhs);
-            last_iterations = 1;
-            return last_iterations;
           }
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
