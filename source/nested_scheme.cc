@@ -97,6 +97,13 @@ namespace PhaseField
                           false,
                           false);
     solution = 0;
+    if (solver_type == LinearSolverType::direct && constant_matrix &&
+        factorization && factorization->size() == matrix.m())
+      {
+        factorization->vmult(solution, rhs);
+        last_iterations = 1;
+        return last_iterations;
+      }
     if (solver_type == LinearSolverType::direct)
       {
         if (!factorization || factorization->size() != matrix.m() ||
@@ -262,26 +269,36 @@ namespace PhaseField
 
   template <int dim>
   unsigned int
-  NestedScheme<dim>::solve_newton_system(const BlockVector &        z,
-                                         const BlockVector &        r,
-                                         BlockVector &              dz,
+  NestedScheme<dim>::solve_newton_system(const BlockVector &  z,
+                                         const BlockVector &  r,
+                                         BlockVector &        dz,
                                          ReducedSystemSolver &solver) const
+  {
+    ReducedMatrices matrices;
+    build_reduced_matrices(z, matrices);
+    return solve_newton_system(matrices, r, dz, solver);
+  }
+
+
+
+  template <int dim>
+  void
+  NestedScheme<dim>::build_reduced_matrices(const BlockVector &z,
+                                            ReducedMatrices &  matrices) const
   {
     const double a = coeff.a();
     const double b = a / (1 + a);
     const double c = coeff.c();
 
-    const Vector &v   = z.block(Field::V);
-    const Vector &p   = z.block(Field::P);
-    const Vector &r_u = r.block(Field::U);
-    const Vector &r_v = r.block(Field::V);
-    const Vector &r_p = r.block(Field::P);
+    const Vector &v = z.block(Field::V);
+    const Vector &p = z.block(Field::P);
 
-    TrilinosWrappers::SparseMatrix k, k_hat, s;
-    build_k(v, 0., k);
+    TrilinosWrappers::SparseMatrix k_hat;
+    build_k(v, 0., matrices.k);
     build_k(v, b, k_hat);
 
     // S = (1+a) Khat M^-1 Khat + b M + D
+    TrilinosWrappers::SparseMatrix &s = matrices.s;
     Vector weight(ops.inverse_lumped_mass);
     weight *= (1 + a);
     k_hat.mmult(s, k_hat, weight);
@@ -296,6 +313,23 @@ namespace PhaseField
               m[i] * (b + c * DoubleWell::d3_psi(v.begin()[i]) * p.begin()[i]));
       }
     s.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NestedScheme<dim>::solve_newton_system(const ReducedMatrices &matrices,
+                                         const BlockVector &    r,
+                                         BlockVector &          dz,
+                                         ReducedSystemSolver &  solver) const
+  {
+    const double a = coeff.a();
+
+    const auto &  k   = matrices.k;
+    const Vector &r_u = r.block(Field::U);
+    const Vector &r_v = r.block(Field::V);
+    const Vector &r_p = r.block(Field::P);
 
     // rhs = -R_V + a R_P - K M^-1 ((1+a) R_P + R_U)
     Vector tmp(r_p), rhs(r_v);
@@ -311,7 +345,7 @@ namespace PhaseField
     Vector &du = dz.block(Field::U);
     Vector &dv = dz.block(Field::V);
     Vector &dp = dz.block(Field::P);
-    const unsigned int iterations = solver.solve(s, dv, rhs);
+    const unsigned int iterations = solver.solve(matrices.s, dv, rhs);
     ops.zero_constrained(dv);
 
     // dU = M^-1 (K dV + R_P)
@@ -322,6 +356,8 @@ namespace PhaseField
     du.scale(ops.inverse_lumped_mass);
 
     // dP = M^-1 ((1+a) K dV - a M dV + (1+a) R_P + R_U)
+    const double *     m = ops.lumped_mass.begin();
+    const unsigned int n = dv.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       dp.begin()[i] = ops.inverse_lumped_mass.begin()[i] *
                       ((1 + a) * (k_dv.begin()[i] + r_p.begin()[i]) -

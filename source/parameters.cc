@@ -412,14 +412,8 @@ namespace PhaseField
   void
   WillmoreParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension, 2 or 3.");
-    prm.declare_entry("Output directory",
-                      "output",
-                      Patterns::Anything(),
-                      "Directory for statistics.csv and the VTU/PVD files.");
+    declare_common_parameters(
+      prm, "Directory for statistics.csv and the VTU/PVD files.");
     GeometryParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
     ModelParameters::declare_parameters(prm);
@@ -463,5 +457,21 @@ namespace PhaseField
         throw InputError("Error in the parameter file <" + filename +
                          ">:\n" + info.str());
       }
+  }
+
+
+
+  void
+  declare_common_parameters(ParameterHandler &prm,
+                            const std::string &output_description)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension, 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::Anything(),
+                      output_description);
   }
 } // namespace PhaseField

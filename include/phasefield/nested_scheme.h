@@ -141,6 +141,19 @@ namespace PhaseField
     void
     reset();
 
+    /**
+     * Declare whether every following solve() is with the matrix of the
+     * stored factorisation (a linear problem whose matrix is constant on
+     * a mesh). If so, solve() applies the factorisation once instead of
+     * running GMRES with it (the first solve still factorises). Only
+     * meaningful for the direct type.
+     */
+    void
+    set_constant_matrix(const bool constant)
+    {
+      constant_matrix = constant;
+    }
+
     /** Number of LU factorisations computed so far. */
     unsigned int
     n_factorizations() const
@@ -166,6 +179,7 @@ namespace PhaseField
     std::unique_ptr<Factorization> factorization;
     unsigned int                   last_iterations     = 0;
     unsigned int                   factorization_count = 0;
+    bool                           constant_matrix     = false;
   };
 
   /**
@@ -232,6 +246,33 @@ namespace PhaseField
                         const BlockVector &        r,
                         BlockVector &              dz,
                         ReducedSystemSolver &solver) const;
+
+    /**
+     * The two matrices of the reduced Newton system at a state: K(V) and
+     * the Schur complement S (see the class documentation). For the
+     * biharmonic model (no double well) both are independent of the state,
+     * so they can be built once per mesh and reused in every time step.
+     */
+    struct ReducedMatrices
+    {
+      dealii::TrilinosWrappers::SparseMatrix k;
+      dealii::TrilinosWrappers::SparseMatrix s;
+    };
+
+    /** Build K(V) and S at the state @p z. */
+    void
+    build_reduced_matrices(const BlockVector &z, ReducedMatrices &matrices) const;
+
+    /**
+     * Solve J dZ = -R with matrices built by build_reduced_matrices()
+     * (possibly at an earlier state, which is exact when they do not
+     * depend on the state). Returns the iterations of the linear solver.
+     */
+    unsigned int
+    solve_newton_system(const ReducedMatrices &matrices,
+                        const BlockVector &    r,
+                        BlockVector &          dz,
+                        ReducedSystemSolver &  solver) const;
 
     /** y = J(Z) x: the Jacobian applied to a vector (used by tests). */
     void

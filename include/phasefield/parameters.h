@@ -204,6 +204,15 @@ namespace PhaseField
    */
   void
   read_parameter_file(dealii::ParameterHandler &prm, const std::string &filename);
+
+  /**
+   * Declare the top-level entries that every program has (DESIGN.md
+   * section 5): `Dimension` (2 or 3) and `Output directory`, documented by
+   * @p output_description.
+   */
+  void
+  declare_common_parameters(dealii::ParameterHandler &prm,
+                            const std::string &       output_description);
 } // namespace PhaseField
 
 #endif
