@@ -1,3 +1,4 @@
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/solver_control.h>
@@ -175,8 +176,35 @@ namespace PhaseField
         r_v.begin()[i] += a * m[i] * (vi - ui) + k_diag * pi;
         r_p.begin()[i] += m[i] * ((vi - ui) + c * DoubleWell::d_psi(vi));
       }
+    if (coeff.has_restoration_terms())
+      {
+        // area term tau eta (L U + M Psi'(U) / (2 eps^2)); no U-row at
+        // fixed U values
+        const double area_factor = coeff.tau * coeff.area_weight;
+        const double c_u = 1. / (2 * coeff.epsilon * coeff.epsilon);
+        Vector       l_u(u);
+        L.vmult(l_u, u);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            r_u.begin()[i] +=
+              area_factor * (l_u.begin()[i] +
+                             c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
+            if (u_is_fixed(i))
+              r_u.begin()[i] = 0;
+          }
+      }
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(r.block(b));
+  }
+
+
+
+  template <int dim>
+  bool
+  NestedScheme<dim>::u_is_fixed(const unsigned int i) const
+  {
+    return coeff.fixed_u != nullptr &&
+           coeff.fixed_u->is_element(ops.locally_owned_dofs.nth_index_in_set(i));
   }
 
 
@@ -224,6 +252,9 @@ namespace PhaseField
                                          BlockVector &              dz,
                                          ReducedSystemSolver &solver) const
   {
+    if (coeff.has_restoration_terms())
+      return solve_full_newton_system(z, r, dz, solver);
+
     const double a = coeff.a();
     const double b = a / (1 + a);
     const double c = coeff.c();
@@ -292,10 +323,156 @@ namespace PhaseField
 
   template <int dim>
   void
+  NestedScheme<dim>::assemble_full_jacobian(
+    const BlockVector &             z,
+    TrilinosWrappers::SparseMatrix &j) const
+  {
+    const double   a           = coeff.a();
+    const double   c           = coeff.c();
+    const double   area_factor = coeff.tau * coeff.area_weight;
+    const double   c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
+    const auto &   L           = ops.stiffness;
+    const IndexSet &owned      = ops.locally_owned_dofs;
+    const unsigned int n       = owned.n_elements();
+    const types::global_dof_index n_dofs = owned.size();
+    const double *                m      = ops.lumped_mass.begin();
+    const double *                u      = z.block(Field::U).begin();
+    const double *                v      = z.block(Field::V).begin();
+    const double *                p      = z.block(Field::P).begin();
+
+    // U rows and columns replaced by the identity: fixed and constrained
+    std::vector<bool> identity_row(n, false);
+    for (unsigned int i = 0; i < n; ++i)
+      identity_row[i] = u_is_fixed(i);
+    for (const unsigned int i : ops.constrained_local_indices)
+      identity_row[i] = true;
+    const auto fixed_column = [&](const types::global_dof_index g) {
+      return coeff.fixed_u != nullptr && coeff.fixed_u->is_element(g);
+    };
+    const auto index = [](const types::global_dof_index g,
+                          const unsigned int            field) {
+      return 3 * g + field;
+    };
+
+    IndexSet owned3(3 * n_dofs);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        owned3.add_range(index(g, 0), index(g, 0) + 3);
+      }
+    owned3.compress();
+
+    DynamicSparsityPattern dsp(3 * n_dofs, 3 * n_dofs, owned3);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        for (unsigned int row = 0; row < 3; ++row)
+          for (unsigned int col = 0; col < 3; ++col)
+            if (!(row == Field::P && col == Field::P))
+              dsp.add(index(g, row), index(g, col));
+        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
+          {
+            const types::global_dof_index col = entry->column();
+            dsp.add(index(g, Field::U), index(col, Field::U));
+            dsp.add(index(g, Field::V), index(col, Field::P));
+            dsp.add(index(g, Field::P), index(col, Field::V));
+          }
+      }
+    j.reinit(owned3, owned3, dsp, z.block(0).get_mpi_communicator());
+
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g      = owned.nth_index_in_set(i);
+        const double                  k_diag =
+          m[i] * (1 + c * DoubleWell::d2_psi(v[i]));
+        if (identity_row[i])
+          j.add(index(g, Field::U), index(g, Field::U), 1.);
+        else
+          {
+            j.add(index(g, Field::U),
+                  index(g, Field::U),
+                  m[i] * ((1 + a) +
+                          area_factor * c_u * DoubleWell::d2_psi(u[i])));
+            j.add(index(g, Field::U), index(g, Field::V), -a * m[i]);
+            j.add(index(g, Field::U), index(g, Field::P), -m[i]);
+            j.add(index(g, Field::V), index(g, Field::U), -a * m[i]);
+            j.add(index(g, Field::P), index(g, Field::U), -m[i]);
+          }
+        j.add(index(g, Field::V),
+              index(g, Field::V),
+              m[i] * (a + c * DoubleWell::d3_psi(v[i]) * p[i]));
+        j.add(index(g, Field::V), index(g, Field::P), k_diag);
+        j.add(index(g, Field::P), index(g, Field::V), k_diag);
+        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
+          {
+            const types::global_dof_index col   = entry->column();
+            const double                  value = entry->value();
+            if (!identity_row[i] && !fixed_column(col))
+              j.add(index(g, Field::U),
+                    index(col, Field::U),
+                    area_factor * value);
+            j.add(index(g, Field::V),
+                  index(col, Field::P),
+                  coeff.inner_tau * value);
+            j.add(index(g, Field::P),
+                  index(col, Field::V),
+                  coeff.inner_tau * value);
+          }
+      }
+    j.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NestedScheme<dim>::solve_full_newton_system(
+    const BlockVector &  z,
+    const BlockVector &  r,
+    BlockVector &        dz,
+    ReducedSystemSolver &solver) const
+  {
+    AssertThrow(solver.type() == LinearSolverType::direct,
+                ExcMessage("The 3-field Newton system of edge restoration "
+                           "needs <Linear solver / Type> = direct (or auto "
+                           "in 2D)."));
+    TrilinosWrappers::SparseMatrix j;
+    assemble_full_jacobian(z, j);
+    const MPI_Comm comm = z.block(0).get_mpi_communicator();
+    Vector         rhs(j.locally_owned_range_indices(), comm);
+    Vector         x(rhs);
+    // owned DoFs are contiguous, so (field b, local i) is local entry 3i+b
+    const unsigned int n = ops.locally_owned_dofs.n_elements();
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int b = 0; b < 3; ++b)
+        rhs.begin()[3 * i + b] = -r.block(b).begin()[i];
+    const unsigned int iterations = solver.solve(j, x, rhs);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int b = 0; b < 3; ++b)
+        dz.block(b).begin()[i] = x.begin()[3 * i + b];
+    // exactly zero, not zero to the solver tolerance
+    for (unsigned int i = 0; i < n; ++i)
+      if (u_is_fixed(i))
+        dz.block(Field::U).begin()[i] = 0;
+    for (unsigned int b = 0; b < 3; ++b)
+      ops.zero_constrained(dz.block(b));
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  void
   NestedScheme<dim>::jacobian_vmult(const BlockVector &z,
-                                    const BlockVector &x,
+                                    const BlockVector &x_in,
                                     BlockVector &      y) const
   {
+    // with fixed U values, J has identity U-rows and U-columns there
+    BlockVector x(x_in);
+    for (unsigned int i = 0; i < x.block(0).locally_owned_size(); ++i)
+      if (u_is_fixed(i))
+        x.block(Field::U).begin()[i] = 0;
+
     const double a = coeff.a();
     const double c = coeff.c();
     TrilinosWrappers::SparseMatrix k;
@@ -315,6 +492,22 @@ namespace PhaseField
           m[i] * ((1 + a) * xu - a * xv - xp);
         y.block(Field::V).begin()[i] += m[i] * (-a * xu + (a + d) * xv);
         y.block(Field::P).begin()[i] += -m[i] * xu;
+      }
+    if (coeff.has_restoration_terms())
+      {
+        const double area_factor = coeff.tau * coeff.area_weight;
+        const double c_u = 1. / (2 * coeff.epsilon * coeff.epsilon);
+        const double *u  = z.block(Field::U).begin();
+        Vector        l_x(x.block(Field::U));
+        ops.stiffness.vmult(l_x, x.block(Field::U));
+        for (unsigned int i = 0; i < n; ++i)
+          y.block(Field::U).begin()[i] =
+            u_is_fixed(i) ?
+              x_in.block(Field::U).begin()[i] :
+              y.block(Field::U).begin()[i] +
+                area_factor *
+                  (l_x.begin()[i] + c_u * m[i] * DoubleWell::d2_psi(u[i]) *
+                                      x.block(Field::U).begin()[i]);
       }
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(y.block(b));
