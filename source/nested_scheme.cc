@@ -7,31 +7,72 @@
 
 #include <phasefield/nested_scheme.h>
 
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+
 #include <cmath>
 
 namespace PhaseField
 {
   using namespace dealii;
 
-  /** A matrix and its LU factorisation, usable as a preconditioner. */
+  /**
+   * A matrix and its LU factorisation, usable as a preconditioner. For
+   * indefinite matrices (pivoting_workspace_percent > 0) MUMPS is called
+   * through Amesos directly, with that much extra workspace (ICNTL(14))
+   * for the fill-in of delayed pivots.
+   */
   class ReducedSystemSolver::Factorization
   {
   public:
-    explicit Factorization(const TrilinosWrappers::SparseMatrix &matrix)
+    Factorization(const TrilinosWrappers::SparseMatrix &matrix,
+                  const unsigned int pivoting_workspace_percent)
       : control(1, 0)
       , solver(control,
                TrilinosWrappers::SolverDirect::AdditionalData(false,
                                                               "Amesos_Mumps"))
     {
       factorized_matrix.copy_from(matrix);
-      solver.initialize(factorized_matrix);
+      if (pivoting_workspace_percent == 0)
+        {
+          solver.initialize(factorized_matrix);
+          return;
+        }
+      problem = std::make_unique<Epetra_LinearProblem>();
+      problem->SetOperator(const_cast<Epetra_CrsMatrix *>(
+        &factorized_matrix.trilinos_matrix()));
+      Amesos factory;
+      indefinite_solver.reset(factory.Create("Amesos_Mumps", *problem));
+      AssertThrow(indefinite_solver != nullptr,
+                  ExcMessage("Trilinos Amesos has no MUMPS."));
+      if (auto *mumps = dynamic_cast<Amesos_Mumps *>(indefinite_solver.get()))
+        mumps->SetICNTL(14, pivoting_workspace_percent);
+      const int symbolic = indefinite_solver->SymbolicFactorization();
+      const int numeric  = indefinite_solver->NumericFactorization();
+      AssertThrow(symbolic == 0 && numeric == 0,
+                  ExcMessage("MUMPS could not factorise the Newton matrix "
+                             "(error " +
+                             std::to_string(symbolic != 0 ? symbolic :
+                                                            numeric) +
+                             ")."));
     }
 
     void
     vmult(TrilinosWrappers::MPI::Vector &      dst,
           const TrilinosWrappers::MPI::Vector &src) const
     {
-      solver.solve(dst, src);
+      if (!indefinite_solver)
+        {
+          solver.solve(dst, src);
+          return;
+        }
+      problem->SetLHS(&dst.trilinos_vector());
+      problem->SetRHS(
+        const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));
+      AssertThrow(indefinite_solver->Solve() == 0,
+                  ExcMessage("MUMPS failed to solve the Newton system."));
     }
 
     types::global_dof_index
@@ -44,6 +85,8 @@ namespace PhaseField
     TrilinosWrappers::SparseMatrix         factorized_matrix;
     SolverControl                          control;
     mutable TrilinosWrappers::SolverDirect solver;
+    std::unique_ptr<Epetra_LinearProblem>  problem;
+    std::unique_ptr<Amesos_BaseSolver>     indefinite_solver;
   };
 
 
@@ -101,7 +144,9 @@ namespace PhaseField
         if (!factorization || factorization->size() != matrix.m() ||
             last_iterations > refactorization_threshold)
           {
-            factorization = std::make_unique<Factorization>(matrix);
+            factorization =
+              std::make_unique<Factorization>(matrix,
+                                              pivoting_workspace_percent);
             ++factorization_count;
           }
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
@@ -349,7 +394,8 @@ namespace PhaseField
     const auto fixed_column = [&](const types::global_dof_index g) {
       return coeff.fixed_u != nullptr && coeff.fixed_u->is_element(g);
     };
-    const auto index = [](const types::global_dof_index g,
+    const double p_scale = full_system_p_scale();
+    const auto   index   = [](const types::global_dof_index g,
                           const unsigned int            field) {
       return 3 * g + field;
     };
@@ -394,15 +440,15 @@ namespace PhaseField
                   m[i] * ((1 + a) +
                           area_factor * c_u * DoubleWell::d2_psi(u[i])));
             j.add(index(g, Field::U), index(g, Field::V), -a * m[i]);
-            j.add(index(g, Field::U), index(g, Field::P), -m[i]);
+            j.add(index(g, Field::U), index(g, Field::P), -p_scale * m[i]);
             j.add(index(g, Field::V), index(g, Field::U), -a * m[i]);
-            j.add(index(g, Field::P), index(g, Field::U), -m[i]);
+            j.add(index(g, Field::P), index(g, Field::U), -p_scale * m[i]);
           }
         j.add(index(g, Field::V),
               index(g, Field::V),
               m[i] * (a + c * DoubleWell::d3_psi(v[i]) * p[i]));
-        j.add(index(g, Field::V), index(g, Field::P), k_diag);
-        j.add(index(g, Field::P), index(g, Field::V), k_diag);
+        j.add(index(g, Field::V), index(g, Field::P), p_scale * k_diag);
+        j.add(index(g, Field::P), index(g, Field::V), p_scale * k_diag);
         for (auto entry = L.begin(g); entry != L.end(g); ++entry)
           {
             const types::global_dof_index col   = entry->column();
@@ -413,10 +459,10 @@ namespace PhaseField
                     area_factor * value);
             j.add(index(g, Field::V),
                   index(col, Field::P),
-                  coeff.inner_tau * value);
+                  p_scale * coeff.inner_tau * value);
             j.add(index(g, Field::P),
                   index(col, Field::V),
-                  coeff.inner_tau * value);
+                  p_scale * coeff.inner_tau * value);
           }
       }
     j.compress(VectorOperation::add);
@@ -436,6 +482,9 @@ namespace PhaseField
                 ExcMessage("The 3-field Newton system of edge restoration "
                            "needs <Linear solver / Type> = direct (or auto "
                            "in 2D)."));
+    // delayed pivots of the indefinite 3-field matrix need more workspace
+    constexpr unsigned int workspace_percent = 200;
+    solver.set_pivoting_workspace(workspace_percent);
     TrilinosWrappers::SparseMatrix j;
     assemble_full_jacobian(z, j);
     const MPI_Comm comm = z.block(0).get_mpi_communicator();
@@ -443,13 +492,15 @@ namespace PhaseField
     Vector         x(rhs);
     // owned DoFs are contiguous, so (field b, local i) is local entry 3i+b
     const unsigned int n = ops.locally_owned_dofs.n_elements();
+    // J' = S J S with S = diag(1, 1, p_scale): dZ = S y, J' y = -S R
+    const double scale[3] = {1., 1., full_system_p_scale()};
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int b = 0; b < 3; ++b)
-        rhs.begin()[3 * i + b] = -r.block(b).begin()[i];
+        rhs.begin()[3 * i + b] = -scale[b] * r.block(b).begin()[i];
     const unsigned int iterations = solver.solve(j, x, rhs);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int b = 0; b < 3; ++b)
-        dz.block(b).begin()[i] = x.begin()[3 * i + b];
+        dz.block(b).begin()[i] = scale[b] * x.begin()[3 * i + b];
     // exactly zero, not zero to the solver tolerance
     for (unsigned int i = 0; i < n; ++i)
       if (u_is_fixed(i))
@@ -591,9 +642,9 @@ namespace PhaseField
         inside += m[i] * 0.5 * (1 - ui);
       }
     const MPI_Comm comm = u.get_mpi_communicator();
-    curvature2          = Utilities::MPI::sum(curvature2, comm);
-    potential           = Utilities::MPI::sum(potential, comm);
-    inside              = Utilities::MPI::sum(inside, comm);
+    curvature2          = dealii::Utilities::MPI::sum(curvature2, comm);
+    potential           = dealii::Utilities::MPI::sum(potential, comm);
+    inside              = dealii::Utilities::MPI::sum(inside, comm);
     const double gradient = ops.stiffness_product(u);
 
     Energies e;

@@ -149,6 +149,17 @@ namespace PhaseField
     void
     set_tolerance(const double relative_tolerance);
 
+    /**
+     * Factorise indefinite matrices (the 3-field Newton matrix of edge
+     * restoration): MUMPS gets @p percent per cent extra workspace for
+     * delayed pivots. 0 (the default): the matrices are definite.
+     */
+    void
+    set_pivoting_workspace(const unsigned int percent)
+    {
+      pivoting_workspace_percent = percent;
+    }
+
     /** Forget the stored factorisation (e.g. after re-meshing). */
     void
     reset();
@@ -177,6 +188,7 @@ namespace PhaseField
     std::unique_ptr<Factorization> factorization;
     unsigned int                   last_iterations     = 0;
     unsigned int                   factorization_count = 0;
+    unsigned int                   pivoting_workspace_percent = 0;
   };
 
   /**
@@ -276,14 +288,24 @@ namespace PhaseField
     }
 
     /**
-     * The 3-field Jacobian J(Z) of the restoration scheme as one sparse
-     * matrix, unknown (field b, DoF i) at row 3 i + b, with the rows and
-     * columns of fixed and hanging-node constrained U values replaced by
-     * those of the identity.
+     * The 3-field Jacobian of the restoration scheme as one sparse matrix
+     * J' = S J(Z) S, S = diag(1, 1, full_system_p_scale()), unknown
+     * (field b, DoF i) at row 3 i + b, with the rows and columns of fixed
+     * and hanging-node constrained U values replaced by those of the
+     * identity. Without the scaling of P the entries differ by the factor
+     * a = tau/ttau^2 (up to 10^7) and the pivoting of the sparse LU fills
+     * in badly.
      */
     void
     assemble_full_jacobian(const BlockVector &                     z,
                            dealii::TrilinosWrappers::SparseMatrix &j) const;
+
+    /** Scaling of the P unknowns in assemble_full_jacobian(): a. */
+    double
+    full_system_p_scale() const
+    {
+      return coeff.a();
+    }
 
   private:
     /** solve_newton_system() with the area term and fixed U values. */
