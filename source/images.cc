@@ -1,17 +1,14 @@
+#include <algorithm>
+#include <cmath>
 #include <deal.II/base/point.h>
-
+#include <filesystem>
+#include <limits>
 #include <phasefield/images.h>
 #include <phasefield/shapes.h>
-
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
-
-#include <algorithm>
-#include <cmath>
-#include <filesystem>
-#include <limits>
 
 namespace PhaseField
 {
@@ -34,10 +31,10 @@ namespace PhaseField
         const int           n = f.size();
         std::vector<double> d(n), z(n + 1);
         std::vector<int>    v(n);
-        int                 k = 0;
-        v[0]                  = 0;
-        z[0]                  = -std::numeric_limits<double>::infinity();
-        z[1]                  = std::numeric_limits<double>::infinity();
+        int                 k   = 0;
+        v[0]                    = 0;
+        z[0]                    = -std::numeric_limits<double>::infinity();
+        z[1]                    = std::numeric_limits<double>::infinity();
         const auto intersection = [&](const int q, const int p) {
           return ((f[q] + double(q) * q) - (f[p] + double(p) * p)) /
                  (2. * q - 2. * p);
@@ -131,7 +128,7 @@ namespace PhaseField
 
 
     double
-    box_distance(const Point<2> &           p,
+    box_distance(const Point<2>            &p,
                  const std::vector<double> &lower,
                  const std::vector<double> &upper)
     {
@@ -191,10 +188,10 @@ namespace PhaseField
             n_inside += inside[y * nx + x];
           }
       if (n_inside == 0 || n_inside == nx * ny)
-        throw InputError("The image file <" + filename + "> has " +
-                         (n_inside == 0 ? "no pixel darker" :
-                                          "no pixel lighter") +
-                         " than <Geometry / Threshold>: there is no edge.");
+        throw InputError(
+          "The image file <" + filename + "> has " +
+          (n_inside == 0 ? "no pixel darker" : "no pixel lighter") +
+          " than <Geometry / Threshold>: there is no edge.");
 
       // the edge lies half-way between an inside and an outside pixel
       const std::vector<double> to_inside = distance_transform(inside, nx, ny);
@@ -202,8 +199,8 @@ namespace PhaseField
         distance_transform(outside, nx, ny);
       distance.resize(nx * ny);
       for (unsigned int i = 0; i < nx * ny; ++i)
-        distance[i] = pixel_size * (inside[i] ? -(to_outside[i] - 0.5) :
-                                                to_inside[i] - 0.5);
+        distance[i] = pixel_size *
+                      (inside[i] ? -(to_outside[i] - 0.5) : to_inside[i] - 0.5);
     }
 
 
@@ -213,7 +210,7 @@ namespace PhaseField
     {
       // bilinear interpolation between pixel centres, clamped at the border
       const auto coordinate = [&](const double x, const unsigned int n) {
-        const double s = std::clamp(x / pixel_size - 0.5, 0., n - 1.);
+        const double       s = std::clamp(x / pixel_size - 0.5, 0., n - 1.);
         const unsigned int i = std::min<unsigned int>(s, n - 2);
         return std::make_pair(i, s - i);
       };
@@ -229,11 +226,11 @@ namespace PhaseField
 
 
     std::shared_ptr<Function<2>>
-    create_damaged_image(const GeometryParameters &   geometry,
+    create_damaged_image(const GeometryParameters    &geometry,
                          const RestorationParameters &restoration)
     {
-      const std::string &         shape  = geometry.shape;
-      const Point<2>              center = Shapes::shape_center<2>(geometry);
+      const std::string           &shape  = geometry.shape;
+      const Point<2>               center = Shapes::shape_center<2>(geometry);
       std::shared_ptr<Function<2>> intact;
       if (shape == "damaged circle")
         {
@@ -254,15 +251,14 @@ namespace PhaseField
                                                      center[1] - sizes[0] / 2};
           const std::vector<double> upper_rotated = {center[0] + sizes[1] / 2,
                                                      center[1] + sizes[0] / 2};
-          const bool is_cross = (shape == "cross");
-          intact              = std::make_shared<LambdaDistance>(
-            [=](const Point<2> &p) {
-              const double bar = box_distance(p, lower, upper);
-              return is_cross ?
-                       std::min(bar,
-                                box_distance(p, lower_rotated, upper_rotated)) :
-                       bar;
-            });
+          const bool                is_cross      = (shape == "cross");
+          intact = std::make_shared<LambdaDistance>([=](const Point<2> &p) {
+            const double bar = box_distance(p, lower, upper);
+            return is_cross ?
+                     std::min(bar,
+                              box_distance(p, lower_rotated, upper_rotated)) :
+                     bar;
+          });
         }
       else if (shape == "image")
         intact = std::make_shared<ImageDistance>(restoration.image_file,
@@ -274,11 +270,11 @@ namespace PhaseField
         return intact;
       // the shape minus the damaged box
       const Box2D damage = restoration.damage;
-      return std::make_shared<LambdaDistance>([intact, damage](
-                                                const Point<2> &p) {
-        return std::max(intact->value(p),
-                        -box_distance(p, damage.lower, damage.upper));
-      });
+      return std::make_shared<LambdaDistance>(
+        [intact, damage](const Point<2> &p) {
+          return std::max(intact->value(p),
+                          -box_distance(p, damage.lower, damage.upper));
+        });
     }
 
 
@@ -286,21 +282,22 @@ namespace PhaseField
     void
     write_picture(const std::vector<double> &values,
                   const unsigned int         n,
-                  const Box2D &              region,
-                  const std::string &        filename)
+                  const Box2D               &region,
+                  const std::string         &filename)
     {
-      constexpr double outline_width = 1.5; // pixels
-      constexpr unsigned char full      = 255;
+      constexpr double        outline_width = 1.5; // pixels
+      constexpr unsigned char full          = 255;
       vtkNew<vtkImageData>    image;
       image->SetDimensions(n, n, 1);
       image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
       const auto near = [&](const double pixel, const double x) {
         return std::abs(pixel - (x * n - 0.5)) <= outline_width / 2;
       };
-      const auto between = [&](const double pixel, const double a, const double b) {
-        return pixel >= a * n - 0.5 - outline_width / 2 &&
-               pixel <= b * n - 0.5 + outline_width / 2;
-      };
+      const auto between =
+        [&](const double pixel, const double a, const double b) {
+          return pixel >= a * n - 0.5 - outline_width / 2 &&
+                 pixel <= b * n - 0.5 + outline_width / 2;
+        };
       for (unsigned int y = 0; y < n; ++y)
         for (unsigned int x = 0; x < n; ++x)
           {

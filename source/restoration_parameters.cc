@@ -1,6 +1,5 @@
-#include <phasefield/restoration_parameters.h>
-
 #include <cmath>
+#include <phasefield/restoration_parameters.h>
 
 namespace PhaseField
 {
@@ -81,7 +80,7 @@ namespace PhaseField
 
 
   void
-  RestorationParameters::parse_parameters(ParameterHandler &    prm,
+  RestorationParameters::parse_parameters(ParameterHandler     &prm,
                                           const MeshParameters &mesh)
   {
     prm.enter_subsection("Restoration");
@@ -103,10 +102,8 @@ namespace PhaseField
                        std::to_string(threshold) + ".");
     const double coarse_h =
       std::ldexp(1.0, -static_cast<int>(mesh.coarsest_level));
-    for (const double x : {region.lower[0],
-                           region.lower[1],
-                           region.upper[0],
-                           region.upper[1]})
+    for (const double x :
+         {region.lower[0], region.lower[1], region.upper[0], region.upper[1]})
       if (std::abs(x / coarse_h - std::round(x / coarse_h)) > 1e-12)
         throw InputError(
           "The corners of <Restoration / Region> must be multiples of "

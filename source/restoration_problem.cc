@@ -1,20 +1,17 @@
+#include <cmath>
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <phasefield/images.h>
 #include <phasefield/restoration_problem.h>
 #include <phasefield/shapes.h>
 #include <phasefield/willmore_problem.h>
-
-#include <cmath>
 
 namespace PhaseField
 {
   using namespace dealii;
 
   std::vector<double>
-  sample_on_pixel_grid(const DoFHandler<2> &                dof_handler,
+  sample_on_pixel_grid(const DoFHandler<2>                 &dof_handler,
                        const TrilinosWrappers::MPI::Vector &u,
                        const unsigned int                   n)
   {
@@ -27,7 +24,7 @@ namespace PhaseField
 
     // every pixel centre lies in exactly one half-open cell [x0,x1)x[y0,y1)
     std::vector<double> values(n * n, 0.);
-    const auto first_pixel = [n](const double x) {
+    const auto          first_pixel = [n](const double x) {
       return static_cast<int>(std::ceil(x * n - 0.5));
     };
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -71,8 +68,8 @@ namespace PhaseField
   {
     const RestorationParameters &restoration = prm.restoration;
     WillmoreProblemOptions<2>    options;
-    options.program_name    = "edge_restoration";
-    options.area_weight     = restoration.eta;
+    options.program_name = "edge_restoration";
+    options.area_weight  = restoration.eta;
     options.signed_distance =
       Images::create_damaged_image(prm.willmore.geometry, restoration);
     const Box2D region = restoration.region;
@@ -84,8 +81,8 @@ namespace PhaseField
     WillmoreProblem<2> problem(prm.willmore, options);
     problem.run();
 
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    const unsigned int n    = restoration.picture_resolution;
+    const MPI_Comm            comm = MPI_COMM_WORLD;
+    const unsigned int        n    = restoration.picture_resolution;
     const std::vector<double> restored =
       sample_on_pixel_grid(problem.get_dof_handler(),
                            problem.state().block(0),
@@ -95,7 +92,7 @@ namespace PhaseField
         // the initial data is a function: sample it directly
         const Shapes::PhaseFieldProfile<2> u0(*options.signed_distance,
                                               prm.willmore.model.epsilon);
-        std::vector<double> initial(n * n);
+        std::vector<double>                initial(n * n);
         for (unsigned int j = 0; j < n; ++j)
           for (unsigned int i = 0; i < n; ++i)
             initial[j * n + i] =

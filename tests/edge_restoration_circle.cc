@@ -9,8 +9,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::vector<std::string> header;
-  const auto               rows = Testing::run_restoration(R"(
+  std::vector<std::string>                 header;
+  const auto                               rows = Testing::run_restoration(R"(
 set Dimension = 2
 subsection Geometry
   set Shape  = damaged circle
@@ -39,7 +39,7 @@ subsection Output
   set VTU interval = 0
 end
 )",
-                                               header);
+                                             header);
   Testing::check_restoration_table(rows, header);
   Testing::log() << "restored.png written: "
                  << (std::ifstream("results/restored.png") ? "yes" : "NO")

@@ -3,16 +3,13 @@
 // outside the open region equals the input phase field tanh(d/eps) at its
 // support point bit for bit, while U inside the region has changed.
 
-#include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/mapping_q1.h>
-
-#include <phasefield/images.h>
-#include <phasefield/shapes.h>
-
 #include "tests.h"
 
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <map>
+#include <phasefield/images.h>
+#include <phasefield/shapes.h>
 
 int
 main(int argc, char **argv)
@@ -76,7 +73,7 @@ end
   DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dof_handler, points);
   const Shapes::PhaseFieldProfile<2> u0(*options.signed_distance,
                                         parameters.willmore.model.epsilon);
-  const auto &u = problem.state().block(0);
+  const auto                        &u = problem.state().block(0);
 
   unsigned int n_outside = 0, n_changed_outside = 0, n_changed_inside = 0;
   for (const auto &[dof, point] : points)
@@ -100,6 +97,5 @@ end
                  << (n_outside > 100 ? "> 100" : "TOO FEW") << '\n'
                  << "of them changed: " << n_changed_outside << '\n'
                  << "DoFs inside the region changed: "
-                 << (n_changed_inside > 100 ? "> 100" : "TOO FEW")
-                 << std::endl;
+                 << (n_changed_inside > 100 ? "> 100" : "TOO FEW") << std::endl;
 }

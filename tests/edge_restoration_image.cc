@@ -3,25 +3,22 @@
 // signed distance (checked against the exact one of the disc to within 1.5
 // pixels: the pixelated edge) and restored for two steps.
 
-#include <deal.II/base/point.h>
-
-#include <phasefield/images.h>
-
 #include "tests.h"
 
+#include <cmath>
+#include <deal.II/base/point.h>
+#include <phasefield/images.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-
-#include <cmath>
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  constexpr unsigned int n = 32;
-  const dealii::Point<2> center(0.5, 0.5);
-  constexpr double       radius = 0.3;
+  constexpr unsigned int                   n = 32;
+  const dealii::Point<2>                   center(0.5, 0.5);
+  constexpr double                         radius = 0.3;
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
       vtkNew<vtkImageData> image;
@@ -42,14 +39,14 @@ main(int argc, char **argv)
   MPI_Barrier(MPI_COMM_WORLD);
 
   const PhaseField::Images::ImageDistance distance("disc.png", 0.5);
-  double                                   max_error = 0;
+  double                                  max_error = 0;
   for (unsigned int i = 0; i <= 20; ++i)
     for (unsigned int j = 0; j <= 20; ++j)
       {
         const dealii::Point<2> p(0.2 + 0.03 * i, 0.2 + 0.03 * j);
-        max_error = std::max(max_error,
-                             std::abs(distance.value(p) -
-                                      (center.distance(p) - radius)));
+        max_error =
+          std::max(max_error,
+                   std::abs(distance.value(p) - (center.distance(p) - radius)));
       }
   Testing::log() << "image " << distance.nx << " x " << distance.ny
                  << ", signed distance within 1.5 pixels of the exact one: "
@@ -83,6 +80,6 @@ subsection Output
   set VTU interval = 0
 end
 )",
-                                               header);
+                                             header);
   Testing::check_restoration_table(rows, header);
 }

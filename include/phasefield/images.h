@@ -2,11 +2,9 @@
 #define phasefield_images_h
 
 #include <deal.II/base/function.h>
-
+#include <memory>
 #include <phasefield/parameters.h>
 #include <phasefield/restoration_parameters.h>
-
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,12 +24,12 @@ namespace PhaseField
      * inconsistent sizes and missing or unreadable image files.
      */
     std::shared_ptr<dealii::Function<2>>
-    create_damaged_image(const GeometryParameters &   geometry,
+    create_damaged_image(const GeometryParameters    &geometry,
                          const RestorationParameters &restoration);
 
     /** Signed distance to the box [lower, upper] (negative inside). */
     double
-    box_distance(const dealii::Point<2> &   p,
+    box_distance(const dealii::Point<2>    &p,
                  const std::vector<double> &lower,
                  const std::vector<double> &upper);
 
@@ -72,8 +70,8 @@ namespace PhaseField
     void
     write_picture(const std::vector<double> &values,
                   const unsigned int         n,
-                  const Box2D &              region,
-                  const std::string &        filename);
+                  const Box2D               &region,
+                  const std::string         &filename);
   } // namespace Images
 } // namespace PhaseField
 

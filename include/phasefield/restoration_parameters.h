@@ -2,9 +2,7 @@
 #define phasefield_restoration_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <phasefield/parameters.h>
-
 #include <string>
 #include <vector>
 

@@ -2,11 +2,8 @@
 #define phasefield_restoration_problem_h
 
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <phasefield/restoration_parameters.h>
-
 #include <vector>
 
 namespace PhaseField
@@ -39,7 +36,7 @@ namespace PhaseField
    * values.
    */
   std::vector<double>
-  sample_on_pixel_grid(const dealii::DoFHandler<2> &                dof_handler,
+  sample_on_pixel_grid(const dealii::DoFHandler<2>                 &dof_handler,
                        const dealii::TrilinosWrappers::MPI::Vector &u,
                        const unsigned int                           n);
 } // namespace PhaseField
