@@ -1,18 +1,15 @@
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_gmres.h>
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_solver.h>
-
-#include <phasefield/nested_scheme.h>
-
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
-
 #include <cmath>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <phasefield/nested_scheme.h>
 
 namespace PhaseField
 {
@@ -41,8 +38,8 @@ namespace PhaseField
           return;
         }
       problem = std::make_unique<Epetra_LinearProblem>();
-      problem->SetOperator(const_cast<Epetra_CrsMatrix *>(
-        &factorized_matrix.trilinos_matrix()));
+      problem->SetOperator(
+        const_cast<Epetra_CrsMatrix *>(&factorized_matrix.trilinos_matrix()));
       Amesos factory;
       indefinite_solver.reset(factory.Create("Amesos_Mumps", *problem));
       AssertThrow(indefinite_solver != nullptr,
@@ -52,11 +49,10 @@ namespace PhaseField
       const int symbolic = indefinite_solver->SymbolicFactorization();
       const int numeric  = indefinite_solver->NumericFactorization();
       AssertThrow(symbolic == 0 && numeric == 0,
-                  ExcMessage("MUMPS could not factorise the Newton matrix "
-                             "(error " +
-                             std::to_string(symbolic != 0 ? symbolic :
-                                                            numeric) +
-                             ")."));
+                  ExcMessage(
+                    "MUMPS could not factorise the Newton matrix "
+                    "(error " +
+                    std::to_string(symbolic != 0 ? symbolic : numeric) + ")."));
     }
 
     void
@@ -69,8 +65,7 @@ namespace PhaseField
           return;
         }
       problem->SetLHS(&dst.trilinos_vector());
-      problem->SetRHS(
-        const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));
+      problem->SetRHS(const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));
       AssertThrow(indefinite_solver->Solve() == 0,
                   ExcMessage("MUMPS failed to solve the Newton system."));
     }
@@ -226,14 +221,14 @@ namespace PhaseField
         // area term tau eta (L U + M Psi'(U) / (2 eps^2)); no U-row at
         // fixed U values
         const double area_factor = coeff.tau * coeff.area_weight;
-        const double c_u = 1. / (2 * coeff.epsilon * coeff.epsilon);
+        const double c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
         Vector       l_u(u);
         L.vmult(l_u, u);
         for (unsigned int i = 0; i < n; ++i)
           {
             r_u.begin()[i] +=
-              area_factor * (l_u.begin()[i] +
-                             c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
+              area_factor *
+              (l_u.begin()[i] + c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
             if (u_is_fixed(i))
               r_u.begin()[i] = 0;
           }
@@ -249,7 +244,8 @@ namespace PhaseField
   NestedScheme<dim>::u_is_fixed(const unsigned int i) const
   {
     return coeff.fixed_u != nullptr &&
-           coeff.fixed_u->is_element(ops.locally_owned_dofs.nth_index_in_set(i));
+           coeff.fixed_u->is_element(
+             ops.locally_owned_dofs.nth_index_in_set(i));
   }
 
 
@@ -369,21 +365,21 @@ namespace PhaseField
   template <int dim>
   void
   NestedScheme<dim>::assemble_full_jacobian(
-    const BlockVector &             z,
+    const BlockVector              &z,
     TrilinosWrappers::SparseMatrix &j) const
   {
-    const double   a           = coeff.a();
-    const double   c           = coeff.c();
-    const double   area_factor = coeff.tau * coeff.area_weight;
-    const double   c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
-    const auto &   L           = ops.stiffness;
-    const IndexSet &owned      = ops.locally_owned_dofs;
-    const unsigned int n       = owned.n_elements();
+    const double       a           = coeff.a();
+    const double       c           = coeff.c();
+    const double       area_factor = coeff.tau * coeff.area_weight;
+    const double       c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
+    const auto        &L           = ops.stiffness;
+    const IndexSet    &owned       = ops.locally_owned_dofs;
+    const unsigned int n           = owned.n_elements();
     const types::global_dof_index n_dofs = owned.size();
-    const double *                m      = ops.lumped_mass.begin();
-    const double *                u      = z.block(Field::U).begin();
-    const double *                v      = z.block(Field::V).begin();
-    const double *                p      = z.block(Field::P).begin();
+    const double                 *m      = ops.lumped_mass.begin();
+    const double                 *u      = z.block(Field::U).begin();
+    const double                 *v      = z.block(Field::V).begin();
+    const double                 *p      = z.block(Field::P).begin();
 
     // U rows and columns replaced by the identity: fixed and constrained
     std::vector<bool> identity_row(n, false);
@@ -396,9 +392,7 @@ namespace PhaseField
     };
     const double p_scale = full_system_p_scale();
     const auto   index   = [](const types::global_dof_index g,
-                          const unsigned int            field) {
-      return 3 * g + field;
-    };
+                          const unsigned int field) { return 3 * g + field; };
 
     IndexSet owned3(3 * n_dofs);
     for (unsigned int i = 0; i < n; ++i)
@@ -428,17 +422,16 @@ namespace PhaseField
 
     for (unsigned int i = 0; i < n; ++i)
       {
-        const types::global_dof_index g      = owned.nth_index_in_set(i);
-        const double                  k_diag =
-          m[i] * (1 + c * DoubleWell::d2_psi(v[i]));
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        const double k_diag = m[i] * (1 + c * DoubleWell::d2_psi(v[i]));
         if (identity_row[i])
           j.add(index(g, Field::U), index(g, Field::U), 1.);
         else
           {
             j.add(index(g, Field::U),
                   index(g, Field::U),
-                  m[i] * ((1 + a) +
-                          area_factor * c_u * DoubleWell::d2_psi(u[i])));
+                  m[i] *
+                    ((1 + a) + area_factor * c_u * DoubleWell::d2_psi(u[i])));
             j.add(index(g, Field::U), index(g, Field::V), -a * m[i]);
             j.add(index(g, Field::U), index(g, Field::P), -p_scale * m[i]);
             j.add(index(g, Field::V), index(g, Field::U), -a * m[i]);
@@ -472,11 +465,10 @@ namespace PhaseField
 
   template <int dim>
   unsigned int
-  NestedScheme<dim>::solve_full_newton_system(
-    const BlockVector &  z,
-    const BlockVector &  r,
-    BlockVector &        dz,
-    ReducedSystemSolver &solver) const
+  NestedScheme<dim>::solve_full_newton_system(const BlockVector   &z,
+                                              const BlockVector   &r,
+                                              BlockVector         &dz,
+                                              ReducedSystemSolver &solver) const
   {
     AssertThrow(solver.type() == LinearSolverType::direct,
                 ExcMessage("The 3-field Newton system of edge restoration "
@@ -516,7 +508,7 @@ namespace PhaseField
   void
   NestedScheme<dim>::jacobian_vmult(const BlockVector &z,
                                     const BlockVector &x_in,
-                                    BlockVector &      y) const
+                                    BlockVector       &y) const
   {
     // with fixed U values, J has identity U-rows and U-columns there
     BlockVector x(x_in);
@@ -546,9 +538,9 @@ namespace PhaseField
       }
     if (coeff.has_restoration_terms())
       {
-        const double area_factor = coeff.tau * coeff.area_weight;
-        const double c_u = 1. / (2 * coeff.epsilon * coeff.epsilon);
-        const double *u  = z.block(Field::U).begin();
+        const double  area_factor = coeff.tau * coeff.area_weight;
+        const double  c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
+        const double *u           = z.block(Field::U).begin();
         Vector        l_x(x.block(Field::U));
         ops.stiffness.vmult(l_x, x.block(Field::U));
         for (unsigned int i = 0; i < n; ++i)
@@ -642,9 +634,9 @@ namespace PhaseField
         inside += m[i] * 0.5 * (1 - ui);
       }
     const MPI_Comm comm = u.get_mpi_communicator();
-    curvature2          = dealii::Utilities::MPI::sum(curvature2, comm);
-    potential           = dealii::Utilities::MPI::sum(potential, comm);
-    inside              = dealii::Utilities::MPI::sum(inside, comm);
+    curvature2            = dealii::Utilities::MPI::sum(curvature2, comm);
+    potential             = dealii::Utilities::MPI::sum(potential, comm);
+    inside                = dealii::Utilities::MPI::sum(inside, comm);
     const double gradient = ops.stiffness_product(u);
 
     Energies e;

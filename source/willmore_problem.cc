@@ -1,26 +1,19 @@
+#include <cmath>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/distributed/solution_transfer.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/mapping_q1.h>
-
 #include <deal.II/grid/grid_generator.h>
-
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
-
-#include <phasefield/narrow_band.h>
-#include <phasefield/shapes.h>
-#include <phasefield/statistics.h>
-#include <phasefield/willmore_problem.h>
-
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <phasefield/narrow_band.h>
+#include <phasefield/shapes.h>
+#include <phasefield/statistics.h>
+#include <phasefield/willmore_problem.h>
 
 namespace PhaseField
 {
@@ -40,13 +33,12 @@ namespace PhaseField
 
   template <int dim>
   WillmoreProblem<dim>::WillmoreProblem(
-    const WillmoreParameters &         parameters,
+    const WillmoreParameters          &parameters,
     const WillmoreProblemOptions<dim> &options)
     : prm(parameters)
     , options(options)
     , mpi_communicator(MPI_COMM_WORLD)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(mpi_communicator,
                       pcout,
                       TimerOutput::never,
@@ -119,7 +111,7 @@ namespace PhaseField
   void
   WillmoreProblem<dim>::reset_fixed_u()
   {
-    Vector &           u = solution.block(Field::U);
+    Vector            &u = solution.block(Field::U);
     const unsigned int n = u.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       if (fixed_u_dofs.is_element(
@@ -133,14 +125,14 @@ namespace PhaseField
   double
   WillmoreProblem<dim>::fixed_u_deviation() const
   {
-    const Vector &     u         = solution.block(Field::U);
+    const Vector      &u         = solution.block(Field::U);
     const unsigned int n         = u.locally_owned_size();
     double             deviation = 0;
     for (unsigned int i = 0; i < n; ++i)
       if (fixed_u_dofs.is_element(
             operators.locally_owned_dofs.nth_index_in_set(i)))
-        deviation = std::max(deviation,
-                             std::abs(u.begin()[i] - initial_u.begin()[i]));
+        deviation =
+          std::max(deviation, std::abs(u.begin()[i] - initial_u.begin()[i]));
     return Utilities::MPI::max(deviation, mpi_communicator);
   }
 
@@ -495,9 +487,9 @@ namespace PhaseField
     MPI_Barrier(mpi_communicator);
 
     const double h = prm.mesh.h();
-    pcout << options.program_name << ": " << dim << "D, shape <" << prm.geometry.shape
-          << ">, h = " << h << ", epsilon = " << prm.model.epsilon
-          << ", tau = " << prm.model.tau
+    pcout << options.program_name << ": " << dim << "D, shape <"
+          << prm.geometry.shape << ">, h = " << h
+          << ", epsilon = " << prm.model.epsilon << ", tau = " << prm.model.tau
           << ", inner tau = " << prm.model.inner_tau << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI rank(s), "
@@ -516,18 +508,18 @@ namespace PhaseField
 
     StatisticsFile statistics(prm.output_directory + "/statistics.csv",
                               concatenate<std::string>({"step",
-                               "time",
-                               "newton_iterations",
-                               "linear_iterations",
-                               "cells",
-                               "dofs",
-                               "willmore_energy",
-                               "area_energy",
-                               "inside_measure",
-                               "l2_error",
-                               "wall_seconds",
-                               "tau",
-                               "residual_norm"},
+                                                        "time",
+                                                        "newton_iterations",
+                                                        "linear_iterations",
+                                                        "cells",
+                                                        "dofs",
+                                                        "willmore_energy",
+                                                        "area_energy",
+                                                        "inside_measure",
+                                                        "l2_error",
+                                                        "wall_seconds",
+                                                        "tau",
+                                                        "residual_norm"},
                                                        extra_columns()),
                               mpi_communicator);
 
@@ -541,18 +533,18 @@ namespace PhaseField
       const double            dofs  = 3. * dof_handler.n_dofs();
       const double            cells = triangulation.n_global_active_cells();
       statistics.add_row(concatenate<double>({double(step),
-                          time,
-                          double(report.newton_iterations),
-                          double(report.linear_iterations),
-                          cells,
-                          dofs,
-                          e.willmore,
-                          e.area,
-                          e.inside_measure,
-                          error,
-                          wall_timer.wall_time(),
-                          tau,
-                          report.final_residual_norm},
+                                              time,
+                                              double(report.newton_iterations),
+                                              double(report.linear_iterations),
+                                              cells,
+                                              dofs,
+                                              e.willmore,
+                                              e.area,
+                                              e.inside_measure,
+                                              error,
+                                              wall_timer.wall_time(),
+                                              tau,
+                                              report.final_residual_norm},
                                              extra_values(e)));
       pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
             << std::setprecision(5) << time << "  newton "

@@ -5,29 +5,22 @@
 // also with the area term of edge restoration (eta > 0) and U held fixed
 // at the DoFs with x < 0.3 (the 3-field solve).
 
-#include <deal.II/base/function.h>
-#include <deal.II/base/function_lib.h>
-#include <deal.II/base/point.h>
-
-#include <deal.II/distributed/tria.h>
-
-#include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/mapping_q1.h>
-
-#include <deal.II/grid/grid_generator.h>
-
-#include <deal.II/numerics/vector_tools.h>
-
-#include <phasefield/narrow_band.h>
-#include <phasefield/nested_scheme.h>
-#include <phasefield/shapes.h>
-
 #include "tests.h"
 
 #include <cmath>
+#include <deal.II/base/function.h>
+#include <deal.II/base/function_lib.h>
+#include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/numerics/vector_tools.h>
 #include <map>
+#include <phasefield/narrow_band.h>
+#include <phasefield/nested_scheme.h>
+#include <phasefield/shapes.h>
 
 using namespace dealii;
 using namespace PhaseField;

@@ -140,7 +140,8 @@ namespace Testing
   {
     dealii::ParameterHandler prm;
     PhaseField::EdgeRestorationParameters::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text + "\nset Output directory = results\n");
+    prm.parse_input_from_string(prm_text +
+                                "\nset Output directory = results\n");
     PhaseField::EdgeRestorationParameters parameters;
     parameters.parse_parameters(prm);
     PhaseField::RestorationProblem(parameters).run();
@@ -153,7 +154,7 @@ namespace Testing
    */
   inline void
   check_restoration_table(const std::vector<std::vector<double>> &rows,
-                          const std::vector<std::string> &        header)
+                          const std::vector<std::string>         &header)
   {
     print_columns(rows,
                   header,
@@ -162,8 +163,8 @@ namespace Testing
                    "area_energy",
                    "weighted_energy",
                    "fixed_u_deviation"});
-    const int energy = column(header, "weighted_energy");
-    const int fixed  = column(header, "fixed_u_deviation");
+    const int energy     = column(header, "weighted_energy");
+    const int fixed      = column(header, "fixed_u_deviation");
     bool      decreasing = true, unchanged = true;
     for (unsigned int i = 0; i < rows.size(); ++i)
       {

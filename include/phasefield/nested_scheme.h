@@ -2,15 +2,12 @@
 #define phasefield_nested_scheme_h
 
 #include <deal.II/base/index_set.h>
-
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
+#include <memory>
 #include <phasefield/lumped_operators.h>
 #include <phasefield/parameters.h>
-
-#include <memory>
 
 namespace PhaseField
 {
@@ -297,7 +294,7 @@ namespace PhaseField
      * in badly.
      */
     void
-    assemble_full_jacobian(const BlockVector &                     z,
+    assemble_full_jacobian(const BlockVector                      &z,
                            dealii::TrilinosWrappers::SparseMatrix &j) const;
 
     /** Scaling of the P unknowns in assemble_full_jacobian(): a. */
@@ -310,9 +307,9 @@ namespace PhaseField
   private:
     /** solve_newton_system() with the area term and fixed U values. */
     unsigned int
-    solve_full_newton_system(const BlockVector &  z,
-                             const BlockVector &  r,
-                             BlockVector &        dz,
+    solve_full_newton_system(const BlockVector   &z,
+                             const BlockVector   &r,
+                             BlockVector         &dz,
                              ReducedSystemSolver &solver) const;
 
     /** Is the U value at locally owned index @p i held fixed? */

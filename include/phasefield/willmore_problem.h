@@ -4,23 +4,17 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
-
+#include <functional>
+#include <memory>
 #include <phasefield/lumped_operators.h>
 #include <phasefield/nested_scheme.h>
 #include <phasefield/parameters.h>
-
-#include <functional>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,9 +75,9 @@ namespace PhaseField
   class WillmoreProblem
   {
   public:
-    explicit WillmoreProblem(
-      const WillmoreParameters &         parameters,
-      const WillmoreProblemOptions<dim> &options = WillmoreProblemOptions<dim>());
+    explicit WillmoreProblem(const WillmoreParameters          &parameters,
+                             const WillmoreProblemOptions<dim> &options =
+                               WillmoreProblemOptions<dim>());
 
     /** Run the whole simulation. Throws on failure. */
     void
@@ -146,7 +140,7 @@ namespace PhaseField
     std::vector<double>
     extra_values(const Energies &energies) const;
 
-    const WillmoreParameters &        prm;
+    const WillmoreParameters         &prm;
     const WillmoreProblemOptions<dim> options;
     MPI_Comm                  mpi_communicator;
     dealii::ConditionalOStream pcout;
