@@ -477,6 +477,9 @@ namespace PhaseField
     // delayed pivots of the indefinite 3-field matrix need more workspace
     constexpr unsigned int workspace_percent = 200;
     solver.set_pivoting_workspace(workspace_percent);
+    // a fresh factorisation for every Newton matrix: GMRES preconditioned
+    // with the factorisation of an earlier, indefinite J may stagnate
+    solver.reset();
     TrilinosWrappers::SparseMatrix j;
     assemble_full_jacobian(z, j);
     const MPI_Comm comm = z.block(0).get_mpi_communicator();
