@@ -1,36 +1,73 @@
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+#include <cmath>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
-
 #include <phasefield/nested_scheme.h>
-
-#include <cmath>
 
 namespace PhaseField
 {
   using namespace dealii;
 
-  /** A matrix and its LU factorisation, usable as a preconditioner. */
+  /**
+   * A matrix and its LU factorisation, usable as a preconditioner. For
+   * indefinite matrices (pivoting_workspace_percent > 0) MUMPS is called
+   * through Amesos directly, with that much extra workspace (ICNTL(14))
+   * for the fill-in of delayed pivots.
+   */
   class ReducedSystemSolver::Factorization
   {
   public:
-    explicit Factorization(const TrilinosWrappers::SparseMatrix &matrix)
+    Factorization(const TrilinosWrappers::SparseMatrix &matrix,
+                  const unsigned int pivoting_workspace_percent)
       : control(1, 0)
       , solver(control,
                TrilinosWrappers::SolverDirect::AdditionalData(false,
                                                               "Amesos_Mumps"))
     {
       factorized_matrix.copy_from(matrix);
-      solver.initialize(factorized_matrix);
+      if (pivoting_workspace_percent == 0)
+        {
+          solver.initialize(factorized_matrix);
+          return;
+        }
+      problem = std::make_unique<Epetra_LinearProblem>();
+      problem->SetOperator(
+        const_cast<Epetra_CrsMatrix *>(&factorized_matrix.trilinos_matrix()));
+      Amesos factory;
+      indefinite_solver.reset(factory.Create("Amesos_Mumps", *problem));
+      AssertThrow(indefinite_solver != nullptr,
+                  ExcMessage("Trilinos Amesos has no MUMPS."));
+      if (auto *mumps = dynamic_cast<Amesos_Mumps *>(indefinite_solver.get()))
+        mumps->SetICNTL(14, pivoting_workspace_percent);
+      const int symbolic = indefinite_solver->SymbolicFactorization();
+      const int numeric  = indefinite_solver->NumericFactorization();
+      AssertThrow(symbolic == 0 && numeric == 0,
+                  ExcMessage(
+                    "MUMPS could not factorise the Newton matrix "
+                    "(error " +
+                    std::to_string(symbolic != 0 ? symbolic : numeric) + ")."));
     }
 
     void
     vmult(TrilinosWrappers::MPI::Vector &      dst,
           const TrilinosWrappers::MPI::Vector &src) const
     {
-      solver.solve(dst, src);
+      if (!indefinite_solver)
+        {
+          solver.solve(dst, src);
+          return;
+        }
+      problem->SetLHS(&dst.trilinos_vector());
+      problem->SetRHS(const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));
+      AssertThrow(indefinite_solver->Solve() == 0,
+                  ExcMessage("MUMPS failed to solve the Newton system."));
     }
 
     types::global_dof_index
@@ -43,6 +80,8 @@ namespace PhaseField
     TrilinosWrappers::SparseMatrix         factorized_matrix;
     SolverControl                          control;
     mutable TrilinosWrappers::SolverDirect solver;
+    std::unique_ptr<Epetra_LinearProblem>  problem;
+    std::unique_ptr<Amesos_BaseSolver>     indefinite_solver;
   };
 
 
@@ -109,7 +148,9 @@ namespace PhaseField
         if (!factorization || factorization->size() != matrix.m() ||
             last_iterations > refactorization_threshold)
           {
-            factorization = std::make_unique<Factorization>(matrix);
+            factorization =
+              std::make_unique<Factorization>(matrix,
+                                              pivoting_workspace_percent);
             ++factorization_count;
           }
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
@@ -163,8 +204,8 @@ namespace PhaseField
         inside += m[i] * 0.5 * (1 - ui);
       }
     const MPI_Comm comm   = u.get_mpi_communicator();
-    potential             = Utilities::MPI::sum(potential, comm);
-    inside                = Utilities::MPI::sum(inside, comm);
+    potential             = dealii::Utilities::MPI::sum(potential, comm);
+    inside                = dealii::Utilities::MPI::sum(inside, comm);
     const double gradient = operators.stiffness_product(u);
 
     Energies e;
@@ -225,8 +266,36 @@ namespace PhaseField
         r_v.begin()[i] += a * m[i] * (vi - ui) + k_diag * pi;
         r_p.begin()[i] += m[i] * ((vi - ui) + c * DoubleWell::d_psi(vi));
       }
+    if (coeff.has_restoration_terms())
+      {
+        // area term tau eta (L U + M Psi'(U) / (2 eps^2)); no U-row at
+        // fixed U values
+        const double area_factor = coeff.tau * coeff.area_weight;
+        const double c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
+        Vector       l_u(u);
+        L.vmult(l_u, u);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            r_u.begin()[i] +=
+              area_factor *
+              (l_u.begin()[i] + c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
+            if (u_is_fixed(i))
+              r_u.begin()[i] = 0;
+          }
+      }
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(r.block(b));
+  }
+
+
+
+  template <int dim>
+  bool
+  NestedScheme<dim>::u_is_fixed(const unsigned int i) const
+  {
+    return coeff.fixed_u != nullptr &&
+           coeff.fixed_u->is_element(
+             ops.locally_owned_dofs.nth_index_in_set(i));
   }
 
 
@@ -274,6 +343,8 @@ namespace PhaseField
                                          BlockVector &        dz,
                                          ReducedSystemSolver &solver) const
   {
+    if (coeff.has_restoration_terms())
+      return solve_full_newton_system(z, r, dz, solver);
     ReducedMatrices matrices;
     build_reduced_matrices(z, matrices);
     return solve_newton_system(matrices, r, dz, solver);
@@ -371,10 +442,161 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedScheme<dim>::jacobian_vmult(const BlockVector &z,
-                                    const BlockVector &x,
-                                    BlockVector &      y) const
+  NestedScheme<dim>::assemble_full_jacobian(
+    const BlockVector              &z,
+    TrilinosWrappers::SparseMatrix &j) const
   {
+    const double       a           = coeff.a();
+    const double       c           = coeff.c();
+    const double       area_factor = coeff.tau * coeff.area_weight;
+    const double       c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
+    const auto        &L           = ops.stiffness;
+    const IndexSet    &owned       = ops.locally_owned_dofs;
+    const unsigned int n           = owned.n_elements();
+    const types::global_dof_index n_dofs = owned.size();
+    const double                 *m      = ops.lumped_mass.begin();
+    const double                 *u      = z.block(Field::U).begin();
+    const double                 *v      = z.block(Field::V).begin();
+    const double                 *p      = z.block(Field::P).begin();
+
+    // U rows and columns replaced by the identity: fixed and constrained
+    std::vector<bool> identity_row(n, false);
+    for (unsigned int i = 0; i < n; ++i)
+      identity_row[i] = u_is_fixed(i);
+    for (const unsigned int i : ops.constrained_local_indices)
+      identity_row[i] = true;
+    const auto fixed_column = [&](const types::global_dof_index g) {
+      return coeff.fixed_u != nullptr && coeff.fixed_u->is_element(g);
+    };
+    const double p_scale = full_system_p_scale();
+    const auto   index   = [](const types::global_dof_index g,
+                          const unsigned int field) { return 3 * g + field; };
+
+    IndexSet owned3(3 * n_dofs);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        owned3.add_range(index(g, 0), index(g, 0) + 3);
+      }
+    owned3.compress();
+
+    DynamicSparsityPattern dsp(3 * n_dofs, 3 * n_dofs, owned3);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        for (unsigned int row = 0; row < 3; ++row)
+          for (unsigned int col = 0; col < 3; ++col)
+            if (!(row == Field::P && col == Field::P))
+              dsp.add(index(g, row), index(g, col));
+        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
+          {
+            const types::global_dof_index col = entry->column();
+            dsp.add(index(g, Field::U), index(col, Field::U));
+            dsp.add(index(g, Field::V), index(col, Field::P));
+            dsp.add(index(g, Field::P), index(col, Field::V));
+          }
+      }
+    j.reinit(owned3, owned3, dsp, z.block(0).get_mpi_communicator());
+
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        const double k_diag = m[i] * (1 + c * DoubleWell::d2_psi(v[i]));
+        if (identity_row[i])
+          j.add(index(g, Field::U), index(g, Field::U), 1.);
+        else
+          {
+            j.add(index(g, Field::U),
+                  index(g, Field::U),
+                  m[i] *
+                    ((1 + a) + area_factor * c_u * DoubleWell::d2_psi(u[i])));
+            j.add(index(g, Field::U), index(g, Field::V), -a * m[i]);
+            j.add(index(g, Field::U), index(g, Field::P), -p_scale * m[i]);
+            j.add(index(g, Field::V), index(g, Field::U), -a * m[i]);
+            j.add(index(g, Field::P), index(g, Field::U), -p_scale * m[i]);
+          }
+        j.add(index(g, Field::V),
+              index(g, Field::V),
+              m[i] * (a + c * DoubleWell::d3_psi(v[i]) * p[i]));
+        j.add(index(g, Field::V), index(g, Field::P), p_scale * k_diag);
+        j.add(index(g, Field::P), index(g, Field::V), p_scale * k_diag);
+        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
+          {
+            const types::global_dof_index col   = entry->column();
+            const double                  value = entry->value();
+            if (!identity_row[i] && !fixed_column(col))
+              j.add(index(g, Field::U),
+                    index(col, Field::U),
+                    area_factor * value);
+            j.add(index(g, Field::V),
+                  index(col, Field::P),
+                  p_scale * coeff.inner_tau * value);
+            j.add(index(g, Field::P),
+                  index(col, Field::V),
+                  p_scale * coeff.inner_tau * value);
+          }
+      }
+    j.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NestedScheme<dim>::solve_full_newton_system(const BlockVector   &z,
+                                              const BlockVector   &r,
+                                              BlockVector         &dz,
+                                              ReducedSystemSolver &solver) const
+  {
+    AssertThrow(solver.type() == LinearSolverType::direct,
+                ExcMessage("The 3-field Newton system of edge restoration "
+                           "needs <Linear solver / Type> = direct (or auto "
+                           "in 2D)."));
+    // delayed pivots of the indefinite 3-field matrix need more workspace
+    constexpr unsigned int workspace_percent = 200;
+    solver.set_pivoting_workspace(workspace_percent);
+    // a fresh factorisation for every Newton matrix: GMRES preconditioned
+    // with the factorisation of an earlier, indefinite J may stagnate
+    solver.reset();
+    TrilinosWrappers::SparseMatrix j;
+    assemble_full_jacobian(z, j);
+    const MPI_Comm comm = z.block(0).get_mpi_communicator();
+    Vector         rhs(j.locally_owned_range_indices(), comm);
+    Vector         x(rhs);
+    // owned DoFs are contiguous, so (field b, local i) is local entry 3i+b
+    const unsigned int n = ops.locally_owned_dofs.n_elements();
+    // J' = S J S with S = diag(1, 1, p_scale): dZ = S y, J' y = -S R
+    const double scale[3] = {1., 1., full_system_p_scale()};
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int b = 0; b < 3; ++b)
+        rhs.begin()[3 * i + b] = -scale[b] * r.block(b).begin()[i];
+    const unsigned int iterations = solver.solve(j, x, rhs);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int b = 0; b < 3; ++b)
+        dz.block(b).begin()[i] = scale[b] * x.begin()[3 * i + b];
+    // exactly zero, not zero to the solver tolerance
+    for (unsigned int i = 0; i < n; ++i)
+      if (u_is_fixed(i))
+        dz.block(Field::U).begin()[i] = 0;
+    for (unsigned int b = 0; b < 3; ++b)
+      ops.zero_constrained(dz.block(b));
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  NestedScheme<dim>::jacobian_vmult(const BlockVector &z,
+                                    const BlockVector &x_in,
+                                    BlockVector       &y) const
+  {
+    // with fixed U values, J has identity U-rows and U-columns there
+    BlockVector x(x_in);
+    for (unsigned int i = 0; i < x.block(0).locally_owned_size(); ++i)
+      if (u_is_fixed(i))
+        x.block(Field::U).begin()[i] = 0;
+
     const double a = coeff.a();
     const double c = coeff.c();
     TrilinosWrappers::SparseMatrix k;
@@ -394,6 +616,22 @@ namespace PhaseField
           m[i] * ((1 + a) * xu - a * xv - xp);
         y.block(Field::V).begin()[i] += m[i] * (-a * xu + (a + d) * xv);
         y.block(Field::P).begin()[i] += -m[i] * xu;
+      }
+    if (coeff.has_restoration_terms())
+      {
+        const double  area_factor = coeff.tau * coeff.area_weight;
+        const double  c_u         = 1. / (2 * coeff.epsilon * coeff.epsilon);
+        const double *u           = z.block(Field::U).begin();
+        Vector        l_x(x.block(Field::U));
+        ops.stiffness.vmult(l_x, x.block(Field::U));
+        for (unsigned int i = 0; i < n; ++i)
+          y.block(Field::U).begin()[i] =
+            u_is_fixed(i) ?
+              x_in.block(Field::U).begin()[i] :
+              y.block(Field::U).begin()[i] +
+                area_factor *
+                  (l_x.begin()[i] + c_u * m[i] * DoubleWell::d2_psi(u[i]) *
+                                      x.block(Field::U).begin()[i]);
       }
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(y.block(b));

@@ -79,7 +79,8 @@ namespace PhaseField
       "Shape",
       "two circles",
       Patterns::Selection("circle|quarter circle|rectangle|two circles|cube|"
-                          "disc|sphere|ellipsoid|torus|function"),
+                          "disc|sphere|ellipsoid|torus|function|"
+                          "damaged circle|cross|bar|image"),
       "Initial shape. The phase field is tanh(signed distance / epsilon), "
       "negative inside. circle/sphere: Center, Radius. quarter circle: "
       "circle around Center (default: the origin). rectangle/cube: Center, "
@@ -87,7 +88,10 @@ namespace PhaseField
       "Center, Second center, Radius. disc: Center, Sizes = diameter, "
       "thickness (axis x_d). ellipsoid: Center, Sizes = semi-axes. torus: "
       "Center, Sizes = R, r (axis x_d; in 2D an annulus). function: "
-      "Expression.");
+      "Expression. Only for edge_restoration: damaged circle (circle of "
+      "Center, Radius), cross (Center, Sizes = arm length, arm width), bar "
+      "(Center, Sizes = length, width), image (Image file, Threshold); "
+      "see <Restoration / Damage>.");
     prm.declare_entry("Center",
                       "",
                       Patterns::Anything(),

@@ -4,6 +4,8 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <deal.II/fe/mapping_q1.h>
+
 #include <deal.II/grid/grid_generator.h>
 
 #include <deal.II/numerics/data_out.h>
@@ -19,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 
 namespace PhaseField
 {
@@ -48,16 +51,29 @@ namespace PhaseField
         return scheme.term_scale(z);
       };
     }
+
+
+
+    /** @p head followed by @p tail. */
+    template <typename T>
+    std::vector<T>
+    concatenate(std::vector<T> head, const std::vector<T> &tail)
+    {
+      head.insert(head.end(), tail.begin(), tail.end());
+      return head;
+    }
   } // namespace
 
 
 
   template <int dim>
-  WillmoreProblem<dim>::WillmoreProblem(const WillmoreParameters &parameters)
+  WillmoreProblem<dim>::WillmoreProblem(
+    const WillmoreParameters          &parameters,
+    const WillmoreProblemOptions<dim> &options)
     : prm(parameters)
+    , options(options)
     , mpi_communicator(MPI_COMM_WORLD)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , computing_timer(mpi_communicator,
                       pcout,
                       TimerOutput::never,
@@ -69,7 +85,9 @@ namespace PhaseField
     , fe(1)
     , dof_handler(triangulation)
   {
-    signed_distance = Shapes::create_signed_distance<dim>(prm.geometry);
+    signed_distance = options.signed_distance ?
+                        options.signed_distance :
+                        Shapes::create_signed_distance<dim>(prm.geometry);
 
     LinearSolverType type = prm.linear_solver.type;
     if (type == LinearSolverType::automatic)
@@ -103,7 +121,88 @@ namespace PhaseField
     c.tau         = tau;
     c.inner_tau   = prm.model.inner_tau;
     c.double_well = true;
+    c.area_weight = options.area_weight;
+    c.fixed_u     = options.u_is_free ? &fixed_u_dofs : nullptr;
     return c;
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::setup_fixed_u()
+  {
+    fixed_u_dofs.clear();
+    fixed_u_dofs.set_size(dof_handler.n_dofs());
+    initial_u.reinit(operators.locally_owned_dofs, mpi_communicator);
+    const Shapes::PhaseFieldProfile<dim> u0(*signed_distance,
+                                            prm.model.epsilon);
+    VectorTools::interpolate(dof_handler, u0, initial_u);
+    constraints.distribute(initial_u);
+    if (!options.u_is_free)
+      return;
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                         dof_handler,
+                                         support_points);
+    for (const auto &[dof, point] : support_points)
+      if (!options.u_is_free(point))
+        fixed_u_dofs.add_index(dof);
+    fixed_u_dofs.compress();
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::reset_fixed_u()
+  {
+    Vector            &u = solution.block(Field::U);
+    const unsigned int n = u.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      if (fixed_u_dofs.is_element(
+            operators.locally_owned_dofs.nth_index_in_set(i)))
+        u.begin()[i] = initial_u.begin()[i];
+  }
+
+
+
+  template <int dim>
+  double
+  WillmoreProblem<dim>::fixed_u_deviation() const
+  {
+    const Vector      &u         = solution.block(Field::U);
+    const unsigned int n         = u.locally_owned_size();
+    double             deviation = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      if (fixed_u_dofs.is_element(
+            operators.locally_owned_dofs.nth_index_in_set(i)))
+        deviation =
+          std::max(deviation, std::abs(u.begin()[i] - initial_u.begin()[i]));
+    return Utilities::MPI::max(deviation, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  WillmoreProblem<dim>::extra_columns() const
+  {
+    if (!options.restoration())
+      return {};
+    return {"weighted_energy", "fixed_u_deviation"};
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  WillmoreProblem<dim>::extra_values(const Energies &energies) const
+  {
+    if (!options.restoration())
+      return {};
+    return {energies.willmore + options.area_weight * energies.area,
+            fixed_u_deviation()};
   }
 
 
@@ -147,6 +246,8 @@ namespace PhaseField
     linear_solver->reset();
     reinit_vector(solution);
     reinit_vector(old_solution);
+    if (options.restoration())
+      setup_fixed_u();
   }
 
 
@@ -330,6 +431,8 @@ namespace PhaseField
                               prm.model.tau,
                               solution)
         .initialize_f(solution);
+    if (options.restoration())
+      reset_fixed_u();
     distribute_constraints(solution);
   }
 
@@ -427,10 +530,10 @@ namespace PhaseField
     MPI_Barrier(mpi_communicator);
 
     const double h = prm.mesh.h();
-    pcout << "willmore_flow: " << dim << "D, "
+    pcout << options.program_name << ": " << dim << "D, "
           << (prm.model.scheme == Scheme::nested ? "nested" : "semi-implicit")
-          << " scheme, shape <" << prm.geometry.shape << ">, h = " << h << ", epsilon = " << prm.model.epsilon
-          << ", tau = " << prm.model.tau
+          << " scheme, shape <" << prm.geometry.shape << ">, h = " << h
+          << ", epsilon = " << prm.model.epsilon << ", tau = " << prm.model.tau
           << ", inner tau = " << prm.model.inner_tau << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI rank(s), "
@@ -450,19 +553,20 @@ namespace PhaseField
     initialize_fields();
 
     StatisticsFile statistics(prm.output_directory + "/statistics.csv",
-                              {"step",
-                               "time",
-                               "newton_iterations",
-                               "linear_iterations",
-                               "cells",
-                               "dofs",
-                               "willmore_energy",
-                               "area_energy",
-                               "inside_measure",
-                               "l2_error",
-                               "wall_seconds",
-                               "tau",
-                               "residual_norm"},
+                              concatenate<std::string>({"step",
+                                                        "time",
+                                                        "newton_iterations",
+                                                        "linear_iterations",
+                                                        "cells",
+                                                        "dofs",
+                                                        "willmore_energy",
+                                                        "area_energy",
+                                                        "inside_measure",
+                                                        "l2_error",
+                                                        "wall_seconds",
+                                                        "tau",
+                                                        "residual_norm"},
+                                                       extra_columns()),
                               mpi_communicator);
 
     double     time   = 0;
@@ -473,19 +577,20 @@ namespace PhaseField
       const double            error = compute_l2_error(time);
       const double            dofs  = double(n_fields()) * dof_handler.n_dofs();
       const double            cells = triangulation.n_global_active_cells();
-      statistics.add_row({double(step),
-                          time,
-                          double(report.newton_iterations),
-                          double(report.linear_iterations),
-                          cells,
-                          dofs,
-                          e.willmore,
-                          e.area,
-                          e.inside_measure,
-                          error,
-                          wall_timer.wall_time(),
-                          tau,
-                          report.final_residual_norm});
+      statistics.add_row(concatenate<double>({double(step),
+                                              time,
+                                              double(report.newton_iterations),
+                                              double(report.linear_iterations),
+                                              cells,
+                                              dofs,
+                                              e.willmore,
+                                              e.area,
+                                              e.inside_measure,
+                                              error,
+                                              wall_timer.wall_time(),
+                                              tau,
+                                              report.final_residual_norm},
+                                             extra_values(e)));
       pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
             << std::setprecision(5) << time << "  newton "
             << report.newton_iterations << " (linear "

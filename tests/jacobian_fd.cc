@@ -1,36 +1,35 @@
 // The exact Jacobian of the nested scheme (NestedScheme::jacobian_vmult)
 // agrees with central finite differences of the residual, and the
 // eliminated Newton solve (NestedScheme::solve_newton_system) solves
-// J dZ = -R, in 2D and 3D, on an adaptive mesh with hanging nodes.
-
-#include <deal.II/base/function.h>
-#include <deal.II/base/function_lib.h>
-#include <deal.II/base/point.h>
-
-#include <deal.II/distributed/tria.h>
-
-#include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/fe_q.h>
-
-#include <deal.II/grid/grid_generator.h>
-
-#include <deal.II/numerics/vector_tools.h>
-
-#include <phasefield/narrow_band.h>
-#include <phasefield/nested_scheme.h>
-#include <phasefield/shapes.h>
+// J dZ = -R, in 2D and 3D, on an adaptive mesh with hanging nodes; in 2D
+// also with the area term of edge restoration (eta > 0) and U held fixed
+// at the DoFs with x < 0.3 (the 3-field solve).
 
 #include "tests.h"
 
 #include <cmath>
+#include <deal.II/base/function.h>
+#include <deal.II/base/function_lib.h>
+#include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <map>
+#include <phasefield/narrow_band.h>
+#include <phasefield/nested_scheme.h>
+#include <phasefield/shapes.h>
 
 using namespace dealii;
 using namespace PhaseField;
 
 template <int dim>
 void
-check(const LinearSolverType solver_type)
+check(const LinearSolverType solver_type,
+      const double           eta      = 0,
+      const bool             fix_some = false)
 {
   const MPI_Comm                            comm = MPI_COMM_WORLD;
   parallel::distributed::Triangulation<dim> tria(comm);
@@ -60,6 +59,20 @@ check(const LinearSolverType solver_type)
   coeff.epsilon   = eps;
   coeff.tau       = 0.03 * h;
   coeff.inner_tau = h * h;
+  coeff.area_weight = eta;
+  IndexSet fixed(dof_handler.n_dofs());
+  if (fix_some)
+    {
+      std::map<types::global_dof_index, Point<dim>> points;
+      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                           dof_handler,
+                                           points);
+      for (const auto &[dof, point] : points)
+        if (point[0] < 0.3)
+          fixed.add_index(dof);
+      fixed.compress();
+      coeff.fixed_u = &fixed;
+    }
   const NestedScheme<dim> scheme(ops, coeff);
   ReducedSystemSolver solver(solver_type, 1e-12, 2000);
 
@@ -85,6 +98,10 @@ check(const LinearSolverType solver_type)
       x.block(b) *= (b + 1.);
       ops.zero_constrained(x.block(b));
     }
+  // directions keep fixed U values fixed
+  for (unsigned int i = 0; i < x.block(0).locally_owned_size(); ++i)
+    if (fixed.is_element(ops.locally_owned_dofs.nth_index_in_set(i)))
+      x.block(Field::U).begin()[i] = 0;
 
   // central differences
   const double step = 1e-6;
@@ -98,6 +115,9 @@ check(const LinearSolverType solver_type)
   scheme.jacobian_vmult(z, x, jx);
   BlockVector difference(jx);
   difference -= rp;
+  if (eta > 0)
+    Testing::log() << "eta = " << eta
+                   << (fix_some ? ", U fixed at x < 0.3" : "") << ": ";
   Testing::log() << dim << "D, " << dof_handler.n_dofs() << " DoFs, "
                  << constraints.n_constraints() << " hanging-node constraints"
                  << (constraints.n_constraints() > 0 ? " (> 0)" : "") << std::endl;
@@ -128,6 +148,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check<2>(LinearSolverType::direct);
+  check<2>(LinearSolverType::direct, 1.);
+  check<2>(LinearSolverType::direct, 10., true);
   check<3>(LinearSolverType::direct);
   check<3>(LinearSolverType::iterative);
 }

@@ -125,3 +125,56 @@ namespace Testing
       }
   }
 } // namespace Testing
+
+#include <phasefield/restoration_parameters.h>
+#include <phasefield/restoration_problem.h>
+
+namespace Testing
+{
+  /**
+   * Run edge_restoration on the parameters in @p prm_text (output
+   * directory "results") and return the rows of statistics.csv.
+   */
+  inline std::vector<std::vector<double>>
+  run_restoration(const std::string &prm_text, std::vector<std::string> &header)
+  {
+    dealii::ParameterHandler prm;
+    PhaseField::EdgeRestorationParameters::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text +
+                                "\nset Output directory = results\n");
+    PhaseField::EdgeRestorationParameters parameters;
+    parameters.parse_parameters(prm);
+    PhaseField::RestorationProblem(parameters).run();
+    return read_csv("results/statistics.csv", header);
+  }
+
+  /**
+   * Print the restoration columns and check that the weighted energy
+   * never increases and that U outside the region never changes.
+   */
+  inline void
+  check_restoration_table(const std::vector<std::vector<double>> &rows,
+                          const std::vector<std::string>         &header)
+  {
+    print_columns(rows,
+                  header,
+                  {"step",
+                   "willmore_energy",
+                   "area_energy",
+                   "weighted_energy",
+                   "fixed_u_deviation"});
+    const int energy     = column(header, "weighted_energy");
+    const int fixed      = column(header, "fixed_u_deviation");
+    bool      decreasing = true, unchanged = true;
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      {
+        unchanged = unchanged && rows[i][fixed] == 0;
+        if (i > 0)
+          decreasing = decreasing && rows[i][energy] <= rows[i - 1][energy];
+      }
+    log() << "weighted energy decreasing at every step: "
+          << (decreasing ? "yes" : "NO") << '\n'
+          << "U outside the region unchanged: " << (unchanged ? "yes" : "NO")
+          << std::endl;
+  }
+} // namespace Testing

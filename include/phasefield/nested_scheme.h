@@ -1,14 +1,13 @@
 #ifndef phasefield_nested_scheme_h
 #define phasefield_nested_scheme_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
+#include <memory>
 #include <phasefield/lumped_operators.h>
 #include <phasefield/parameters.h>
-
-#include <memory>
 
 namespace PhaseField
 {
@@ -56,6 +55,30 @@ namespace PhaseField
     double tau;
     double inner_tau;
     bool   double_well = true;
+
+    /**
+     * Weight eta of the area term 2 tau eta a_eps[U] of the outer energy
+     * (thesis (5.7), edge restoration); 0 for Willmore flow.
+     */
+    double area_weight = 0;
+
+    /**
+     * Global indices of the DoFs (at least the locally relevant ones) at
+     * which U is held at its current value (the C^1 data of thesis
+     * Definition 5.1); nullptr: U is free everywhere. V and P stay free.
+     */
+    const dealii::IndexSet *fixed_u = nullptr;
+
+    /**
+     * True if the area term or fixed U values are present: the UU block of
+     * the Jacobian is then not diagonal, and the Newton system is solved as
+     * one 3-field system (NestedScheme::solve_newton_system()).
+     */
+    bool
+    has_restoration_terms() const
+    {
+      return area_weight != 0 || fixed_u != nullptr;
+    }
 
     /** a = tau / inner_tau^2. */
     double
@@ -137,6 +160,17 @@ namespace PhaseField
     void
     set_tolerance(const double relative_tolerance);
 
+    /**
+     * Factorise indefinite matrices (the 3-field Newton matrix of edge
+     * restoration): MUMPS gets @p percent per cent extra workspace for
+     * delayed pivots. 0 (the default): the matrices are definite.
+     */
+    void
+    set_pivoting_workspace(const unsigned int percent)
+    {
+      pivoting_workspace_percent = percent;
+    }
+
     /** Forget the stored factorisation (e.g. after re-meshing). */
     void
     reset();
@@ -180,6 +214,7 @@ namespace PhaseField
     unsigned int                   last_iterations     = 0;
     unsigned int                   factorization_count = 0;
     bool                           constant_matrix     = false;
+    unsigned int                   pivoting_workspace_percent = 0;
   };
 
   /**
@@ -204,6 +239,19 @@ namespace PhaseField
    *   D = c M[Psi'''(V) P];
    * then dU = M^-1 (K dV + R_P) and
    * dP = M^-1 (((1+a) K - a M) dV + (1+a) R_P + R_U).
+   *
+   * Edge restoration (NestedCoefficients::has_restoration_terms()): the
+   * outer energy gains 2 tau eta a_eps[U], a_eps[u] = (1/2) Int eps
+   * |grad u|^2 + Psi(u)/eps, so that (divided by 2 eps)
+   *
+   *   R_U += tau eta (L U + M Psi'(U) / (2 eps^2)),
+   *   J_UU = (1+a) M + tau eta (L + M[Psi''(U)] / (2 eps^2)),
+   *
+   * and at the DoFs in NestedCoefficients::fixed_u the U-row of R is zero,
+   * the U-row and U-column of J are those of the identity (thesis 5.3).
+   * The UU block is then neither diagonal nor, with fixed U, eliminable
+   * row by row; J is assembled as one sparse matrix (unknowns interleaved,
+   * (U_i, V_i, P_i)) and solved by the direct solver (2D).
    */
   template <int dim>
   class NestedScheme
@@ -299,7 +347,39 @@ namespace PhaseField
       return coeff;
     }
 
+    /**
+     * The 3-field Jacobian of the restoration scheme as one sparse matrix
+     * J' = S J(Z) S, S = diag(1, 1, full_system_p_scale()), unknown
+     * (field b, DoF i) at row 3 i + b, with the rows and columns of fixed
+     * and hanging-node constrained U values replaced by those of the
+     * identity. Without the scaling of P the entries differ by the factor
+     * a = tau/ttau^2 (up to 10^7) and the pivoting of the sparse LU fills
+     * in badly.
+     */
+    void
+    assemble_full_jacobian(const BlockVector                      &z,
+                           dealii::TrilinosWrappers::SparseMatrix &j) const;
+
+    /** Scaling of the P unknowns in assemble_full_jacobian(): a. */
+    double
+    full_system_p_scale() const
+    {
+      return coeff.a();
+    }
+
   private:
+    /** solve_newton_system() with the area term and fixed U values. */
+    unsigned int
+    solve_full_newton_system(const BlockVector   &z,
+                             const BlockVector   &r,
+                             BlockVector         &dz,
+                             ReducedSystemSolver &solver) const;
+
+    /** Is the U value at locally owned index @p i held fixed? */
+    bool
+    u_is_fixed(const unsigned int i) const;
+
+
     /** K(V) = M + c M[Psi''(V)] + ttau L, shifted by -shift*M. */
     void
     build_k(const Vector &                          v,

@@ -4,29 +4,56 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
-
+#include <functional>
+#include <memory>
 #include <phasefield/lumped_operators.h>
 #include <phasefield/nested_scheme.h>
 #include <phasefield/newton_solver.h>
 #include <phasefield/parameters.h>
-
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace PhaseField
 {
+  /**
+   * Optional generalisations of the Willmore problem, used by other
+   * programs (edge restoration, thesis 5.3). The defaults give Willmore
+   * flow.
+   */
+  template <int dim>
+  struct WillmoreProblemOptions
+  {
+    /** Signed distance of the initial shape; nullptr: `Geometry`. */
+    std::shared_ptr<dealii::Function<dim>> signed_distance;
+
+    /** Weight eta of the area term in the outer energy (thesis (5.7)). */
+    double area_weight = 0;
+
+    /**
+     * The open region in which U is free; empty: everywhere. At every
+     * other node U is held at the initial data tanh(d/eps) (also on nodes
+     * created by re-meshing), V and P are free everywhere.
+     */
+    std::function<bool(const dealii::Point<dim> &)> u_is_free;
+
+    /** Name printed in the first line of the log. */
+    std::string program_name = "willmore_flow";
+
+    /** Are the edge restoration terms present? */
+    bool
+    restoration() const
+    {
+      return area_weight != 0 || static_cast<bool>(u_is_free);
+    }
+  };
+
   /**
    * Willmore flow of a phase field on an adaptive (narrow-band) mesh of
    * [0,1]^dim, in the shape of the deal.II tutorials: setup_system(),
@@ -41,7 +68,9 @@ namespace PhaseField
   class WillmoreProblem
   {
   public:
-    explicit WillmoreProblem(const WillmoreParameters &parameters);
+    explicit WillmoreProblem(const WillmoreParameters          &parameters,
+                             const WillmoreProblemOptions<dim> &options =
+                               WillmoreProblemOptions<dim>());
 
     /** Run the whole simulation. Throws on failure. */
     void
@@ -52,6 +81,13 @@ namespace PhaseField
     state() const
     {
       return solution;
+    }
+
+    /** The DoF handler of state() (e.g. for pictures and tests). */
+    const dealii::DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
     }
 
   private:
@@ -88,7 +124,26 @@ namespace PhaseField
     void
     compute_curvature(Vector &curvature) const;
 
-    const WillmoreParameters &prm;
+    /**
+     * Edge restoration: collect the DoFs with fixed U (outside
+     * WillmoreProblemOptions::u_is_free) and their initial values.
+     */
+    void
+    setup_fixed_u();
+    /** Edge restoration: U = initial data at the fixed DoFs. */
+    void
+    reset_fixed_u();
+    /** Edge restoration: max |U - initial data| over the fixed DoFs. */
+    double
+    fixed_u_deviation() const;
+    /** Statistics columns of edge restoration (none for Willmore flow). */
+    std::vector<std::string>
+    extra_columns() const;
+    std::vector<double>
+    extra_values(const Energies &energies) const;
+
+    const WillmoreParameters         &prm;
+    const WillmoreProblemOptions<dim> options;
     MPI_Comm                  mpi_communicator;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        computing_timer;
@@ -100,7 +155,12 @@ namespace PhaseField
     LumpedOperators<dim>                              operators;
     std::unique_ptr<ReducedSystemSolver>              linear_solver;
 
-    std::unique_ptr<dealii::Function<dim>> signed_distance;
+    std::shared_ptr<dealii::Function<dim>> signed_distance;
+
+    /** Edge restoration: DoFs with fixed U (locally relevant). */
+    dealii::IndexSet fixed_u_dofs;
+    /** Edge restoration: the initial data U^0 on the current mesh. */
+    Vector initial_u;
 
     /** Current state and the state at the previous time step. */
     BlockVector solution;
