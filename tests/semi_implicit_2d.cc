@@ -9,7 +9,6 @@
 
 #include "tests.h"
 
-#include <cmath>
 
 int
 main(int argc, char **argv)
@@ -41,22 +40,5 @@ end
                                                header);
   Testing::print_columns(rows, header, Testing::checked_columns());
 
-  const double pi = M_PI;
-  bool         ok = true;
-  for (unsigned int i = 1; i < rows.size(); ++i)
-    {
-      const auto & row = rows[i];
-      const double t   = row[Testing::column(header, "time")];
-      const double r_exact = std::pow(2 * t + std::pow(0.4, 4), 0.25);
-      const double r_measured =
-        std::sqrt(4 * row[Testing::column(header, "inside_measure")] / pi);
-      const double w = row[Testing::column(header, "willmore_energy")];
-      ok = ok && std::abs(r_measured / r_exact - 1) < 0.01;
-      ok = ok && std::abs(w / (pi / (4 * r_exact)) - 1) < 0.10;
-      ok = ok && w <= rows[i - 1][Testing::column(header, "willmore_energy")];
-      ok = ok && row[Testing::column(header, "newton_iterations")] <= 10;
-    }
-  Testing::log() << "radius within 1%, Willmore energy within 10% and "
-                    "decreasing: "
-                 << (ok ? "yes" : "NO") << std::endl;
+  Testing::check_quarter_circle(rows, header, 0.4, 0.10);
 }

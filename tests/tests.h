@@ -6,6 +6,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -176,5 +177,37 @@ namespace Testing
           << (decreasing ? "yes" : "NO") << '\n'
           << "U outside the region unchanged: " << (unchanged ? "yes" : "NO")
           << std::endl;
+  }
+  /**
+   * Check a quarter-circle run (r0 = @p r0 at the origin) against the
+   * exact Willmore flow r(t) = (2t + r0^4)^(1/4): in every step after step
+   * 0 the radius from inside_measure is within 1%, the Willmore energy is
+   * within @p energy_tolerance of pi/(4r) and does not increase, and
+   * Newton needed at most 10 iterations. Logs one line with the verdict.
+   */
+  inline void
+  check_quarter_circle(const std::vector<std::vector<double>> &rows,
+                       const std::vector<std::string> &        header,
+                       const double                            r0,
+                       const double energy_tolerance)
+  {
+    const double pi = M_PI;
+    bool         ok = true;
+    for (unsigned int i = 1; i < rows.size(); ++i)
+      {
+        const auto & row     = rows[i];
+        const double t       = row[column(header, "time")];
+        const double r_exact = std::pow(2 * t + std::pow(r0, 4), 0.25);
+        const double r_measured =
+          std::sqrt(4 * row[column(header, "inside_measure")] / pi);
+        const double w = row[column(header, "willmore_energy")];
+        ok = ok && std::abs(r_measured / r_exact - 1) < 0.01;
+        ok = ok && std::abs(w / (pi / (4 * r_exact)) - 1) < energy_tolerance;
+        ok = ok && w <= rows[i - 1][column(header, "willmore_energy")];
+        ok = ok && row[column(header, "newton_iterations")] <= 10;
+      }
+    log() << "radius within 1%, Willmore energy within "
+          << std::round(100 * energy_tolerance) << "% and decreasing: "
+          << (ok ? "yes" : "NO") << std::endl;
   }
 } // namespace Testing
