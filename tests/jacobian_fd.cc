@@ -5,6 +5,7 @@
 // also with the area term of edge restoration (eta > 0) and U held fixed
 // at the DoFs with x < 0.3 (the 3-field solve).
 
+#include "adaptive_test_mesh.h"
 #include "tests.h"
 
 #include <cmath>
@@ -31,29 +32,14 @@ check(const LinearSolverType solver_type,
       const double           eta      = 0,
       const bool             fix_some = false)
 {
-  const MPI_Comm                            comm = MPI_COMM_WORLD;
-  parallel::distributed::Triangulation<dim> tria(comm);
-  GridGenerator::hyper_cube(tria, 0., 1.);
-  tria.refine_global(2);
-  const double                       eps = 1. / 16;
-  Point<dim> center;
-  for (unsigned int d = 0; d < dim; ++d)
-    center[d] = 0.45;
-  const Shapes::SphereDistance<dim> sphere(center, 0.3);
-  NarrowBand::refine_around_zero_level_set(tria, sphere, 1.5, eps, dim == 2 ? 5 : 4);
-
-  FE_Q<dim>       fe(1);
-  DoFHandler<dim> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  IndexSet relevant;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-  AffineConstraints<double> constraints(relevant);
-  DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-  constraints.close();
-
-  LumpedOperators<dim> ops;
-  ops.reinit(dof_handler, constraints, comm);
-  const double h = 1. / (dim == 2 ? 32 : 16);
+  const MPI_Comm                         comm = MPI_COMM_WORLD;
+  const Testing::AdaptiveTestMesh<dim>   mesh;
+  const double                           eps         = mesh.eps;
+  const double                           h           = mesh.h;
+  const auto &                           dof_handler = mesh.dof_handler;
+  const auto &                           constraints = mesh.constraints;
+  const auto &                           sphere      = mesh.sphere;
+  const LumpedOperators<dim> &           ops         = mesh.operators;
 
   NestedCoefficients coeff;
   coeff.epsilon   = eps;
