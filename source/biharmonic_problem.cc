@@ -354,7 +354,7 @@ namespace PhaseField
   {
     TimerOutput::Scope t(computing_timer, "assembly and factorisation");
     // K and S do not depend on the state: build them once.
-    scheme->build_reduced_matrices(solution, matrices);
+    scheme->build_reduced_matrices(solution, matrices, linear_solver->type());
     // Factorise S now; the solver keeps the factorisation and, since S
     // is constant, applies it directly in every time step.
     linear_solver->set_constant_matrix(true);

@@ -56,7 +56,7 @@ namespace PhaseField
     }
 
     void
-    vmult(TrilinosWrappers::MPI::Vector &      dst,
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const
     {
       if (!indefinite_solver)
@@ -83,6 +83,99 @@ namespace PhaseField
     std::unique_ptr<Epetra_LinearProblem>  problem;
     std::unique_ptr<Amesos_BaseSolver>     indefinite_solver;
   };
+
+
+
+  namespace
+  {
+    /**
+     * Settings of the algebraic multigrid cycles (Trilinos ML) of the
+     * iterative solvers: aggregation for a scalar second-order operator,
+     * three Chebyshev sweeps per level (measured on the 3D cube: two sweeps
+     * need twice the CG iterations, more than three do not pay).
+     */
+    TrilinosWrappers::PreconditionAMG::AdditionalData
+    multigrid_settings()
+    {
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps       = 3;
+      data.aggregation_threshold = 0.02;
+      return data;
+    }
+
+
+
+    /** S = diag(d) + w Khat M^-1 Khat applied to a vector. */
+    class ProductFormMatrix
+    {
+    public:
+      ProductFormMatrix(const TrilinosWrappers::SparseMatrix &k_hat,
+                        const double                          w,
+                        const TrilinosWrappers::MPI::Vector  &d,
+                        const TrilinosWrappers::MPI::Vector  &inverse_mass)
+        : k_hat(k_hat)
+        , w(w)
+        , d(d)
+        , inverse_mass(inverse_mass)
+        , tmp(d)
+      {}
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        k_hat.vmult(tmp, src);
+        tmp.scale(inverse_mass);
+        k_hat.vmult(dst, tmp);
+        dst *= w;
+        tmp = src;
+        tmp.scale(d);
+        dst += tmp;
+      }
+
+    private:
+      const TrilinosWrappers::SparseMatrix &k_hat;
+      const double                          w;
+      const TrilinosWrappers::MPI::Vector  &d;
+      const TrilinosWrappers::MPI::Vector  &inverse_mass;
+      mutable TrilinosWrappers::MPI::Vector tmp;
+    };
+
+
+
+    /**
+     * The preconditioner G^-1 M G^-1 of
+     * ReducedSystemSolver::solve_product_form(), with one multigrid cycle
+     * for each G^-1.
+     */
+    class SchurPreconditioner
+    {
+    public:
+      SchurPreconditioner(const TrilinosWrappers::SparseMatrix &g,
+                          const TrilinosWrappers::MPI::Vector  &mass)
+        : mass(mass)
+        , tmp(mass)
+      {
+        multigrid.initialize(g, multigrid_settings());
+      }
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        multigrid.vmult(tmp, src);
+        tmp.scale(mass);
+        multigrid.vmult(dst, tmp);
+      }
+
+    private:
+      TrilinosWrappers::PreconditionAMG     multigrid;
+      const TrilinosWrappers::MPI::Vector  &mass;
+      mutable TrilinosWrappers::MPI::Vector tmp;
+    };
+  } // namespace
 
 
 
@@ -128,8 +221,8 @@ namespace PhaseField
 
   unsigned int
   ReducedSystemSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
-                             TrilinosWrappers::MPI::Vector &       solution,
-                             const TrilinosWrappers::MPI::Vector & rhs)
+                             TrilinosWrappers::MPI::Vector        &solution,
+                             const TrilinosWrappers::MPI::Vector  &rhs)
   {
     SolverControl control(max_iterations,
                           tolerance * rhs.l2_norm(),
@@ -161,13 +254,8 @@ namespace PhaseField
       }
     else
       {
-        TrilinosWrappers::PreconditionAMG                 amg;
-        TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-        amg_data.elliptic              = true;
-        amg_data.higher_order_elements = false;
-        amg_data.smoother_sweeps       = 2;
-        amg_data.aggregation_threshold = 0.02;
-        amg.initialize(matrix, amg_data);
+        TrilinosWrappers::PreconditionAMG amg;
+        amg.initialize(matrix, multigrid_settings());
         if (symmetric)
           {
             SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
@@ -190,11 +278,11 @@ namespace PhaseField
 
   template <int dim>
   Energies
-  phase_field_energies(const LumpedOperators<dim> &         operators,
+  phase_field_energies(const LumpedOperators<dim>          &operators,
                        const TrilinosWrappers::MPI::Vector &u,
                        const double                         epsilon)
   {
-    const double *     m         = operators.lumped_mass.begin();
+    const double      *m         = operators.lumped_mass.begin();
     const unsigned int n         = u.locally_owned_size();
     double             potential = 0, inside = 0;
     for (unsigned int i = 0; i < n; ++i)
@@ -218,9 +306,37 @@ namespace PhaseField
 
 
 
+  unsigned int
+  ReducedSystemSolver::solve_product_form(
+    const TrilinosWrappers::SparseMatrix &k_hat,
+    const double                          w,
+    const TrilinosWrappers::MPI::Vector  &d,
+    const TrilinosWrappers::SparseMatrix &g,
+    const TrilinosWrappers::MPI::Vector  &mass,
+    const TrilinosWrappers::MPI::Vector  &inverse_mass,
+    TrilinosWrappers::MPI::Vector        &solution,
+    const TrilinosWrappers::MPI::Vector  &rhs)
+  {
+    Assert(solver_type == LinearSolverType::iterative, ExcInternalError());
+    const ProductFormMatrix   s(k_hat, w, d, inverse_mass);
+    const SchurPreconditioner preconditioner(g, mass);
+    ++factorization_count;
+    SolverControl                           control(max_iterations,
+                          tolerance * rhs.l2_norm(),
+                          false,
+                          false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    solution = 0;
+    cg.solve(s, solution, rhs, preconditioner);
+    last_iterations = control.last_step();
+    return last_iterations;
+  }
+
+
+
   template <int dim>
   NestedScheme<dim>::NestedScheme(const LumpedOperators<dim> &operators,
-                                  const NestedCoefficients &  coefficients)
+                                  const NestedCoefficients   &coefficients)
     : ops(operators)
     , coeff(coefficients)
   {}
@@ -229,21 +345,21 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedScheme<dim>::residual(const Vector &     old_u,
+  NestedScheme<dim>::residual(const Vector      &old_u,
                               const BlockVector &z,
-                              BlockVector &      r,
-                              const Vector *     forcing) const
+                              BlockVector       &r,
+                              const Vector      *forcing) const
   {
-    const double a       = coeff.a();
-    const double c       = coeff.c();
-    const double ttau    = coeff.inner_tau;
-    const auto & L       = ops.stiffness;
-    Vector &     r_u     = r.block(Field::U);
-    Vector &     r_v     = r.block(Field::V);
-    Vector &     r_p     = r.block(Field::P);
-    const Vector &u      = z.block(Field::U);
-    const Vector &v      = z.block(Field::V);
-    const Vector &p      = z.block(Field::P);
+    const double  a    = coeff.a();
+    const double  c    = coeff.c();
+    const double  ttau = coeff.inner_tau;
+    const auto   &L    = ops.stiffness;
+    Vector       &r_u  = r.block(Field::U);
+    Vector       &r_v  = r.block(Field::V);
+    Vector       &r_p  = r.block(Field::P);
+    const Vector &u    = z.block(Field::U);
+    const Vector &v    = z.block(Field::V);
+    const Vector &p    = z.block(Field::P);
 
     // stiffness parts first: r_v = ttau L P, r_p = ttau L V
     L.vmult(r_v, p);
@@ -251,16 +367,16 @@ namespace PhaseField
     L.vmult(r_p, v);
     r_p *= ttau;
 
-    const unsigned int n  = u.locally_owned_size();
-    const double *     m  = ops.lumped_mass.begin();
-    const double *     uk = old_u.begin();
-    const double *     f  = forcing ? forcing->begin() : nullptr;
+    const unsigned int n              = u.locally_owned_size();
+    const double      *m              = ops.lumped_mass.begin();
+    const double      *uk             = old_u.begin();
+    const double      *f              = forcing ? forcing->begin() : nullptr;
     const double       forcing_factor = coeff.tau / coeff.epsilon;
     for (unsigned int i = 0; i < n; ++i)
       {
         const double ui = u.begin()[i], vi = v.begin()[i], pi = p.begin()[i];
         const double k_diag = m[i] * (1 + c * DoubleWell::d2_psi(vi));
-        r_u.begin()[i] = m[i] * ((ui - uk[i]) - a * (vi - ui) - pi);
+        r_u.begin()[i]      = m[i] * ((ui - uk[i]) - a * (vi - ui) - pi);
         if (f)
           r_u.begin()[i] -= forcing_factor * f[i];
         r_v.begin()[i] += a * m[i] * (vi - ui) + k_diag * pi;
@@ -314,22 +430,20 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedScheme<dim>::build_k(const Vector &                  v,
+  NestedScheme<dim>::build_k(const Vector                   &v,
                              const double                    shift,
                              TrilinosWrappers::SparseMatrix &k) const
   {
     k.copy_from(ops.stiffness);
     k *= coeff.inner_tau;
     const double       c = coeff.c();
-    const double *     m = ops.lumped_mass.begin();
+    const double      *m = ops.lumped_mass.begin();
     const unsigned int n = v.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
         const types::global_dof_index g =
           ops.locally_owned_dofs.nth_index_in_set(i);
-        k.add(g,
-              g,
-              m[i] * (1 - shift + c * DoubleWell::d2_psi(v.begin()[i])));
+        k.add(g, g, m[i] * (1 - shift + c * DoubleWell::d2_psi(v.begin()[i])));
       }
     k.compress(VectorOperation::add);
   }
@@ -338,15 +452,15 @@ namespace PhaseField
 
   template <int dim>
   unsigned int
-  NestedScheme<dim>::solve_newton_system(const BlockVector &  z,
-                                         const BlockVector &  r,
-                                         BlockVector &        dz,
+  NestedScheme<dim>::solve_newton_system(const BlockVector   &z,
+                                         const BlockVector   &r,
+                                         BlockVector         &dz,
                                          ReducedSystemSolver &solver) const
   {
     if (coeff.has_restoration_terms())
       return solve_full_newton_system(z, r, dz, solver);
     ReducedMatrices matrices;
-    build_reduced_matrices(z, matrices);
+    build_reduced_matrices(z, matrices, solver.type());
     return solve_newton_system(matrices, r, dz, solver);
   }
 
@@ -354,8 +468,9 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedScheme<dim>::build_reduced_matrices(const BlockVector &z,
-                                            ReducedMatrices &  matrices) const
+  NestedScheme<dim>::build_reduced_matrices(const BlockVector     &z,
+                                            ReducedMatrices       &matrices,
+                                            const LinearSolverType type) const
   {
     const double a = coeff.a();
     const double b = a / (1 + a);
@@ -364,26 +479,47 @@ namespace PhaseField
     const Vector &v = z.block(Field::V);
     const Vector &p = z.block(Field::P);
 
-    TrilinosWrappers::SparseMatrix k_hat;
     build_k(v, 0., matrices.k);
-    build_k(v, b, k_hat);
+    build_k(v, b, matrices.k_hat);
 
-    // S = (1+a) Khat M^-1 Khat + b M + D
-    TrilinosWrappers::SparseMatrix &s = matrices.s;
-    Vector weight(ops.inverse_lumped_mass);
-    weight *= (1 + a);
-    k_hat.mmult(s, k_hat, weight);
-    const double *     m = ops.lumped_mass.begin();
+    // the diagonal part of S: b M + D
+    Vector &diagonal = matrices.diagonal;
+    diagonal.reinit(v, true);
+    const double      *m = ops.lumped_mass.begin();
     const unsigned int n = v.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
+      diagonal.begin()[i] =
+        m[i] * (b + c * DoubleWell::d3_psi(v.begin()[i]) * p.begin()[i]);
+
+    if (type == LinearSolverType::direct)
       {
-        const types::global_dof_index g =
-          ops.locally_owned_dofs.nth_index_in_set(i);
-        s.add(g,
-              g,
-              m[i] * (b + c * DoubleWell::d3_psi(v.begin()[i]) * p.begin()[i]));
+        // S = (1+a) Khat M^-1 Khat + b M + D
+        TrilinosWrappers::SparseMatrix &s = matrices.s;
+        Vector                          weight(ops.inverse_lumped_mass);
+        weight *= (1 + a);
+        matrices.k_hat.mmult(s, matrices.k_hat, weight);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const types::global_dof_index g =
+              ops.locally_owned_dofs.nth_index_in_set(i);
+            s.add(g, g, diagonal.begin()[i]);
+          }
+        s.compress(VectorOperation::add);
       }
-    s.compress(VectorOperation::add);
+    else
+      {
+        // G = gamma M + sqrt((1+a)/b) Khat, so that b G M^-1 G / gamma^2
+        // approximates S (see schur_mass_shift)
+        matrices.g.copy_from(matrices.k_hat);
+        matrices.g *= std::sqrt((1 + a) / b);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const types::global_dof_index g =
+              ops.locally_owned_dofs.nth_index_in_set(i);
+            matrices.g.add(g, g, schur_mass_shift * m[i]);
+          }
+        matrices.g.compress(VectorOperation::add);
+      }
   }
 
 
@@ -391,13 +527,13 @@ namespace PhaseField
   template <int dim>
   unsigned int
   NestedScheme<dim>::solve_newton_system(const ReducedMatrices &matrices,
-                                         const BlockVector &    r,
-                                         BlockVector &          dz,
-                                         ReducedSystemSolver &  solver) const
+                                         const BlockVector     &r,
+                                         BlockVector           &dz,
+                                         ReducedSystemSolver   &solver) const
   {
     const double a = coeff.a();
 
-    const auto &  k   = matrices.k;
+    const auto   &k   = matrices.k;
     const Vector &r_u = r.block(Field::U);
     const Vector &r_v = r.block(Field::V);
     const Vector &r_p = r.block(Field::P);
@@ -413,10 +549,20 @@ namespace PhaseField
     rhs.add(a, r_p);
     ops.zero_constrained(rhs);
 
-    Vector &du = dz.block(Field::U);
-    Vector &dv = dz.block(Field::V);
-    Vector &dp = dz.block(Field::P);
-    const unsigned int iterations = solver.solve(matrices.s, dv, rhs);
+    Vector            &du = dz.block(Field::U);
+    Vector            &dv = dz.block(Field::V);
+    Vector            &dp = dz.block(Field::P);
+    const unsigned int iterations =
+      solver.type() == LinearSolverType::direct ?
+        solver.solve(matrices.s, dv, rhs) :
+        solver.solve_product_form(matrices.k_hat,
+                                  1 + a,
+                                  matrices.diagonal,
+                                  matrices.g,
+                                  ops.lumped_mass,
+                                  ops.inverse_lumped_mass,
+                                  dv,
+                                  rhs);
     ops.zero_constrained(dv);
 
     // dU = M^-1 (K dV + R_P)
@@ -427,7 +573,7 @@ namespace PhaseField
     du.scale(ops.inverse_lumped_mass);
 
     // dP = M^-1 ((1+a) K dV - a M dV + (1+a) R_P + R_U)
-    const double *     m = ops.lumped_mass.begin();
+    const double      *m = ops.lumped_mass.begin();
     const unsigned int n = dv.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       dp.begin()[i] = ops.inverse_lumped_mass.begin()[i] *
@@ -597,13 +743,13 @@ namespace PhaseField
       if (u_is_fixed(i))
         x.block(Field::U).begin()[i] = 0;
 
-    const double a = coeff.a();
-    const double c = coeff.c();
+    const double                   a = coeff.a();
+    const double                   c = coeff.c();
     TrilinosWrappers::SparseMatrix k;
     build_k(z.block(Field::V), 0., k);
     k.vmult(y.block(Field::V), x.block(Field::P));
     k.vmult(y.block(Field::P), x.block(Field::V));
-    const double *     m = ops.lumped_mass.begin();
+    const double      *m = ops.lumped_mass.begin();
     const unsigned int n = x.block(0).locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -612,8 +758,7 @@ namespace PhaseField
         const double xp = x.block(Field::P).begin()[i];
         const double d  = c * DoubleWell::d3_psi(z.block(Field::V).begin()[i]) *
                          z.block(Field::P).begin()[i];
-        y.block(Field::U).begin()[i] =
-          m[i] * ((1 + a) * xu - a * xv - xp);
+        y.block(Field::U).begin()[i] = m[i] * ((1 + a) * xu - a * xv - xp);
         y.block(Field::V).begin()[i] += m[i] * (-a * xu + (a + d) * xv);
         y.block(Field::P).begin()[i] += -m[i] * xu;
       }
@@ -641,16 +786,16 @@ namespace PhaseField
 
   template <int dim>
   unsigned int
-  NestedScheme<dim>::initialize_v_and_p(BlockVector &        z,
+  NestedScheme<dim>::initialize_v_and_p(BlockVector         &z,
                                         ReducedSystemSolver &solver,
-                                        const double               tolerance) const
+                                        const double         tolerance) const
   {
-    const double  a = coeff.a();
-    const double  c = coeff.c();
-    const Vector &u = z.block(Field::U);
-    Vector &      v = z.block(Field::V);
-    Vector &      p = z.block(Field::P);
-    const double *m = ops.lumped_mass.begin();
+    const double       a = coeff.a();
+    const double       c = coeff.c();
+    const Vector      &u = z.block(Field::U);
+    Vector            &v = z.block(Field::V);
+    Vector            &p = z.block(Field::P);
+    const double      *m = ops.lumped_mass.begin();
     const unsigned int n = u.locally_owned_size();
 
     // V: Newton on R_P(U, V) = M(V-U) + c M Psi'(V) + ttau L V = 0,
@@ -700,8 +845,8 @@ namespace PhaseField
   Energies
   NestedScheme<dim>::energies(const BlockVector &z) const
   {
-    const double  ttau = coeff.inner_tau;
-    Vector        curvature(z.block(Field::U));
+    const double ttau = coeff.inner_tau;
+    Vector       curvature(z.block(Field::U));
     curvature -= z.block(Field::V);
     curvature /= ttau;
 

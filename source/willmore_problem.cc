@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
 
 #include <deal.II/distributed/solution_transfer.h>
 
@@ -648,6 +649,15 @@ namespace PhaseField
           refine_mesh();
       }
     computing_timer.print_summary();
+
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const double peak_megabytes =
+      Utilities::MPI::sum(memory.VmHWM / 1024., mpi_communicator);
+    pcout << "Peak resident memory, summed over "
+          << Utilities::MPI::n_mpi_processes(mpi_communicator)
+          << " rank(s): " << std::fixed << std::setprecision(0)
+          << peak_megabytes << " MB" << std::defaultfloat << std::endl;
   }
 
 
