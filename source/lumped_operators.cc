@@ -17,7 +17,8 @@ namespace PhaseField
   void
   LumpedOperators<dim>::reinit(const DoFHandler<dim> &          dof_handler,
                                const AffineConstraints<double> &constraints,
-                               const MPI_Comm mpi_communicator)
+                               const MPI_Comm mpi_communicator,
+                               const StiffnessQuadrature stiffness_quadrature)
   {
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
@@ -36,7 +37,10 @@ namespace PhaseField
 
     // Gauss-Lobatto points of Q1 are the vertices: the mass is lumped.
     const QGaussLobatto<dim> lumping_quadrature(2);
-    const QGauss<dim>        quadrature(2);
+    const Quadrature<dim>    quadrature =
+      stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
+        Quadrature<dim>(QGaussLobatto<dim>(2)) :
+        Quadrature<dim>(QGauss<dim>(2));
     const auto &             fe = dof_handler.get_fe();
     FEValues<dim>            fe_values(fe,
                             quadrature,

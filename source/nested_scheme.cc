@@ -238,19 +238,36 @@ namespace PhaseField
       }
     if (solver_type == LinearSolverType::direct)
       {
+        const auto refactorize = [&]() {
+          factorization =
+            std::make_unique<Factorization>(matrix, pivoting_workspace_percent);
+          ++factorization_count;
+        };
+        bool fresh = false;
         if (!factorization || factorization->size() != matrix.m() ||
             last_iterations > refactorization_threshold)
           {
-            factorization =
-              std::make_unique<Factorization>(matrix,
-                                              pivoting_workspace_percent);
-            ++factorization_count;
+            refactorize();
+            fresh = true;
           }
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
             50, /*right_preconditioning=*/true));
-        gmres.solve(matrix, solution, rhs, *factorization);
+        try
+          {
+            gmres.solve(matrix, solution, rhs, *factorization);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            // the factorisation of an earlier Newton matrix can be too far
+            // from this one to precondition it: factorise this one, once
+            if (fresh)
+              throw;
+            refactorize();
+            solution = 0;
+            gmres.solve(matrix, solution, rhs, *factorization);
+          }
       }
     else
       {

@@ -181,6 +181,16 @@ namespace PhaseField
                       "Adapt the mesh to the moving interface every this "
                       "many time steps (the band is wide enough for the interface to "
                       "move a few epsilon in between).");
+    prm.declare_entry(
+      "Stiffness quadrature",
+      "Gauss",
+      Patterns::Selection("Gauss|Gauss-Lobatto"),
+      "Quadrature of the stiffness matrix L. Gauss: the exact Q1 matrix "
+      "(9-point stencil on a uniform 2D mesh). Gauss-Lobatto: the vertices, "
+      "as for the lumped mass; on a uniform mesh the 5-point (3D: 7-point) "
+      "stencil, i.e. the P1 matrix on right triangles that the thesis uses, "
+      "with a smaller consistency error for the tanh profile when h is not "
+      "small against epsilon (thesis Fig. 5.1 / Table 5.1 files).");
     prm.leave_subsection();
   }
 
@@ -195,6 +205,10 @@ namespace PhaseField
     adaptive            = prm.get_bool("Adaptive");
     band_width          = prm.get_double("Band width");
     refinement_interval = prm.get_integer("Refinement interval");
+    stiffness_quadrature =
+      prm.get("Stiffness quadrature") == "Gauss-Lobatto" ?
+        StiffnessQuadrature::gauss_lobatto :
+        StiffnessQuadrature::gauss;
     prm.leave_subsection();
     if (finest_level < coarsest_level)
       throw InputError("<Mesh / Finest level> (" +

@@ -243,7 +243,10 @@ namespace PhaseField
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     constraints.close();
 
-    operators.reinit(dof_handler, constraints, mpi_communicator);
+    operators.reinit(dof_handler,
+                     constraints,
+                     mpi_communicator,
+                     prm.mesh.stiffness_quadrature);
     linear_solver->reset();
     reinit_vector(solution);
     reinit_vector(old_solution);

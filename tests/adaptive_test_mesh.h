@@ -29,7 +29,10 @@ namespace Testing
     /** Finest mesh size of the band. */
     static constexpr double h = 1. / (dim == 2 ? 32 : 16);
 
-    AdaptiveTestMesh()
+    /** The mesh, with L integrated by the rule @p stiffness_quadrature. */
+    explicit AdaptiveTestMesh(
+      const PhaseField::StiffnessQuadrature stiffness_quadrature =
+        PhaseField::StiffnessQuadrature::gauss)
       : triangulation(MPI_COMM_WORLD)
       , fe(1)
       , dof_handler(triangulation)
@@ -46,7 +49,10 @@ namespace Testing
       dealii::DoFTools::make_hanging_node_constraints(dof_handler,
                                                       constraints);
       constraints.close();
-      operators.reinit(dof_handler, constraints, MPI_COMM_WORLD);
+      operators.reinit(dof_handler,
+                       constraints,
+                       MPI_COMM_WORLD,
+                       stiffness_quadrature);
     }
 
     static dealii::Point<dim>

@@ -3,7 +3,9 @@
 // differences of the residual, and the eliminated Newton solve
 // (SemiImplicitScheme::solve_newton_system) solves J dZ = -R, in 2D and
 // 3D, on an adaptive mesh with hanging nodes, with the direct and the
-// iterative (GMRES + AMG) linear solver.
+// iterative (GMRES + AMG) linear solver, and in 2D with the stiffness
+// matrix integrated by the Gauss-Lobatto rule (the thesis' 5-point matrix
+// on uniform meshes).
 
 #include <deal.II/base/function_lib.h>
 #include <deal.II/base/point.h>
@@ -32,10 +34,11 @@ using namespace PhaseField;
 
 template <int dim>
 void
-check(const LinearSolverType solver_type)
+check(const LinearSolverType    solver_type,
+      const StiffnessQuadrature stiffness_quadrature = StiffnessQuadrature::gauss)
 {
   const MPI_Comm                         comm = MPI_COMM_WORLD;
-  const Testing::AdaptiveTestMesh<dim>   mesh;
+  const Testing::AdaptiveTestMesh<dim>   mesh(stiffness_quadrature);
   const double                           eps         = mesh.eps;
   const double                           h           = mesh.h;
   const auto &                           dof_handler = mesh.dof_handler;
@@ -76,6 +79,9 @@ check(const LinearSolverType solver_type)
   Testing::log() << dim << "D, " << dof_handler.n_dofs() << " DoFs, "
                  << constraints.n_constraints() << " hanging-node constraints"
                  << (constraints.n_constraints() > 0 ? " (> 0)" : "")
+                 << (stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
+                       ", Gauss-Lobatto stiffness" :
+                       "")
                  << std::endl
                  << "  |R_F(U^0, F^0)| "
                  << (ops.dual_norm(r.block(SemiImplicitField::F)) < 1e-10 ?
@@ -123,5 +129,6 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check<2>(LinearSolverType::direct);
   check<2>(LinearSolverType::iterative);
+  check<2>(LinearSolverType::direct, StiffnessQuadrature::gauss_lobatto);
   check<3>(LinearSolverType::direct);
 }

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <phasefield/lumped_operators.h>
+
 #include <string>
 #include <vector>
 
@@ -75,6 +77,8 @@ namespace PhaseField
     double band_width;
     /** Re-mesh every this many time steps. */
     unsigned int refinement_interval;
+    /** Quadrature of the stiffness matrix L (see StiffnessQuadrature). */
+    StiffnessQuadrature stiffness_quadrature;
 
     /** Finest mesh size h = 2^-finest_level. */
     double
