@@ -608,7 +608,8 @@ namespace PhaseField
                                                        extra_columns()),
                               mpi_communicator);
 
-    double     time   = 0;
+    const unsigned int n_steps = prm.model.n_ramp_steps + prm.model.n_steps;
+    double             time    = 0;
     const auto record = [&](const unsigned int step,
                             const StepReport & report,
                             const double       tau) {
@@ -642,21 +643,27 @@ namespace PhaseField
             << wall_timer.wall_time() << " s]" << std::endl;
       if (prm.output.vtu_interval > 0 &&
           (step % prm.output.vtu_interval == 0 ||
-           step == prm.model.n_steps))
+           step == n_steps))
         output_results(step, time);
     };
     record(0, StepReport(), prm.model.tau);
 
-    for (unsigned int step = 1; step <= prm.model.n_steps; ++step)
+    // the time step the multiplier P of the current state belongs to
+    double state_tau = prm.model.tau;
+    for (unsigned int step = 1; step <= n_steps; ++step)
       {
         old_solution            = solution;
         const BlockVector saved = solution;
-        double            tau   = prm.model.tau;
+        double            tau   = prm.model.step_size(step);
         StepReport        report;
         const bool check_energy = prm.model.scheme == Scheme::nested;
         const double start_energy = check_energy ? weighted_energy() : 0.;
         for (unsigned int attempt = 0;; ++attempt)
           {
+            // P is proportional to tau at the start of a step (R_V = 0 with
+            // a = tau / ttau^2): start Newton from the P of this tau
+            if (prm.model.scheme == Scheme::nested && tau != state_tau)
+              solution.block(Field::P) *= tau / state_tau;
             report = solve_time_step(tau);
             if (report.converged)
               break;
@@ -704,10 +711,11 @@ namespace PhaseField
                        "outer energy, Newton found another critical point)"
                     << std::endl;
           }
+        state_tau = tau;
         time += tau;
         record(step, report, tau);
         if (prm.mesh.adaptive && step % prm.mesh.refinement_interval == 0 &&
-            step < prm.model.n_steps)
+            step < n_steps)
           {
             const double before = options.restoration() ? weighted_energy() : 0.;
             refine_mesh();
