@@ -66,9 +66,9 @@ namespace PhaseField
       if (options.refine_unrefined_islands)
         return typename Tria::MeshSmoothing(Tria::smoothing_on_refinement |
                                             Tria::smoothing_on_coarsening);
-      return typename Tria::MeshSmoothing(
-        Tria::limit_level_difference_at_vertices |
-        Tria::smoothing_on_coarsening);
+      return
+        typename Tria::MeshSmoothing(Tria::limit_level_difference_at_vertices |
+                                     Tria::smoothing_on_coarsening);
     }
 
 
@@ -656,8 +656,8 @@ namespace PhaseField
         const BlockVector saved = solution;
         double            tau   = prm.model.step_size(step);
         StepReport        report;
-        const bool check_energy = prm.model.scheme == Scheme::nested;
-        const double start_energy = check_energy ? weighted_energy() : 0.;
+        const bool        check_energy = prm.model.scheme == Scheme::nested;
+        const double      start_energy = check_energy ? weighted_energy() : 0.;
         for (unsigned int attempt = 0;; ++attempt)
           {
             // P is proportional to tau at the start of a step (R_V = 0 with
@@ -717,7 +717,8 @@ namespace PhaseField
         if (prm.mesh.adaptive && step % prm.mesh.refinement_interval == 0 &&
             step < n_steps)
           {
-            const double before = options.restoration() ? weighted_energy() : 0.;
+            const double before =
+              options.restoration() ? weighted_energy() : 0.;
             refine_mesh();
             if (options.restoration() && prm.output.verbose)
               pcout << std::setprecision(10) << "  re-meshing: weighted energy "
