@@ -254,6 +254,17 @@ namespace PhaseField
                       "15",
                       Patterns::Integer(0),
                       "Number of outer time steps.");
+    prm.declare_entry("Ramp-up steps",
+                      "0",
+                      Patterns::Integer(0),
+                      "Start-up from rough initial data: this many extra "
+                      "steps come first, of sizes Tau/2^n, ..., Tau/4, "
+                      "Tau/2 (n = Ramp-up steps), then Number of steps "
+                      "steps of size Tau. With Tau much larger than "
+                      "Inner tau^2 the first step from non-smooth data is "
+                      "a hard nonlinear problem whatever its size (halving "
+                      "Tau after a failure does not help); small first "
+                      "steps smooth the data so that Newton converges.");
     prm.leave_subsection();
   }
 
@@ -271,6 +282,7 @@ namespace PhaseField
     tau_expression       = prm.get("Tau");
     inner_tau_expression = prm.get("Inner tau");
     n_steps              = prm.get_integer("Number of steps");
+    n_ramp_steps         = prm.get_integer("Ramp-up steps");
     prm.leave_subsection();
   }
 
@@ -410,7 +422,10 @@ namespace PhaseField
     prm.declare_entry("Verbose",
                       "false",
                       Patterns::Bool(),
-                      "Print every Newton iteration.");
+                      "Print every Newton iteration and, for the nested "
+                      "scheme, the energy check of every step (energy + "
+                      "dissipation - energy before the step) and the "
+                      "energy change at every re-meshing.");
     prm.leave_subsection();
   }
 

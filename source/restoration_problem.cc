@@ -70,6 +70,8 @@ namespace PhaseField
     WillmoreProblemOptions<2>    options;
     options.program_name = "edge_restoration";
     options.area_weight  = restoration.eta;
+    // a stationary restored edge must not make the mesh alternate
+    options.refine_unrefined_islands = false;
     options.signed_distance =
       Images::create_damaged_image(prm.willmore.geometry, restoration);
     const Box2D region = restoration.region;

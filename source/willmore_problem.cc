@@ -55,6 +55,25 @@ namespace PhaseField
 
 
 
+    /**
+     * deal.II's smoothing on refinement and coarsening, without
+     * eliminate_unrefined_islands if @p options ask so.
+     */
+    template <int dim>
+    typename Triangulation<dim>::MeshSmoothing
+    mesh_smoothing(const WillmoreProblemOptions<dim> &options)
+    {
+      using Tria = Triangulation<dim>;
+      if (options.refine_unrefined_islands)
+        return typename Tria::MeshSmoothing(Tria::smoothing_on_refinement |
+                                            Tria::smoothing_on_coarsening);
+      return
+        typename Tria::MeshSmoothing(Tria::limit_level_difference_at_vertices |
+                                     Tria::smoothing_on_coarsening);
+    }
+
+
+
     /** @p head followed by @p tail. */
     template <typename T>
     std::vector<T>
@@ -79,10 +98,7 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , triangulation(mpi_communicator,
-                    typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
+    , triangulation(mpi_communicator, mesh_smoothing<dim>(options))
     , fe(1)
     , dof_handler(triangulation)
   {
@@ -204,6 +220,29 @@ namespace PhaseField
       return {};
     return {energies.willmore + options.area_weight * energies.area,
             fixed_u_deviation()};
+  }
+
+
+
+  template <int dim>
+  double
+  WillmoreProblem<dim>::weighted_energy() const
+  {
+    const Energies e = compute_energies();
+    return e.willmore + options.area_weight * e.area;
+  }
+
+
+
+  template <int dim>
+  double
+  WillmoreProblem<dim>::dissipation(const double tau) const
+  {
+    Vector difference(solution.block(Field::U));
+    difference -= old_solution.block(Field::U);
+    // eps ||U - U^k||^2 / (2 tau), in the units of the energies (3/4)
+    return 0.75 * prm.model.epsilon / (2 * tau) *
+           operators.mass_product(difference, difference);
   }
 
 
@@ -573,7 +612,8 @@ namespace PhaseField
                                                        extra_columns()),
                               mpi_communicator);
 
-    double     time   = 0;
+    const unsigned int n_steps = prm.model.n_ramp_steps + prm.model.n_steps;
+    double             time    = 0;
     const auto record = [&](const unsigned int step,
                             const StepReport & report,
                             const double       tau) {
@@ -607,19 +647,27 @@ namespace PhaseField
             << wall_timer.wall_time() << " s]" << std::endl;
       if (prm.output.vtu_interval > 0 &&
           (step % prm.output.vtu_interval == 0 ||
-           step == prm.model.n_steps))
+           step == n_steps))
         output_results(step, time);
     };
     record(0, StepReport(), prm.model.tau);
 
-    for (unsigned int step = 1; step <= prm.model.n_steps; ++step)
+    // the time step the multiplier P of the current state belongs to
+    double state_tau = prm.model.tau;
+    for (unsigned int step = 1; step <= n_steps; ++step)
       {
         old_solution            = solution;
         const BlockVector saved = solution;
-        double            tau   = prm.model.tau;
+        double            tau   = prm.model.step_size(step);
         StepReport        report;
+        const bool        check_energy = prm.model.scheme == Scheme::nested;
+        const double      start_energy = check_energy ? weighted_energy() : 0.;
         for (unsigned int attempt = 0;; ++attempt)
           {
+            // P is proportional to tau at the start of a step (R_V = 0 with
+            // a = tau / ttau^2): start Newton from the P of this tau
+            if (prm.model.scheme == Scheme::nested && tau != state_tau)
+              solution.block(Field::P) *= tau / state_tau;
             report = solve_time_step(tau);
             if (report.converged)
               break;
@@ -645,11 +693,41 @@ namespace PhaseField
                      "tau = "
                   << tau << std::endl;
           }
+        if (check_energy)
+          {
+            // thesis Cor. 3.3: on a fixed mesh the minimiser of the outer
+            // energy satisfies E^{k+1} + eps |U^{k+1} - U^k|^2 / (2 tau)
+            // <= E^k; Newton may converge to another critical point
+            const double rise =
+              weighted_energy() + dissipation(tau) - start_energy;
+            if (prm.output.verbose)
+              pcout << "  energy + dissipation - energy before the step: "
+                    << std::setprecision(4) << rise << std::endl;
+            // round-off of the energies relative to their size (the
+            // curvature (U - V) / ttau loses about log10(1/ttau) digits)
+            constexpr double energy_roundoff = 1e-10;
+            if (rise > energy_roundoff * std::abs(start_energy))
+              pcout << "  Warning: step " << step
+                    << ": energy + dissipation exceeds the energy before the "
+                       "step by "
+                    << std::setprecision(4) << rise
+                    << " (thesis Cor. 3.3 holds for the minimiser of the "
+                       "outer energy, Newton found another critical point)"
+                    << std::endl;
+          }
+        state_tau = tau;
         time += tau;
         record(step, report, tau);
         if (prm.mesh.adaptive && step % prm.mesh.refinement_interval == 0 &&
-            step < prm.model.n_steps)
-          refine_mesh();
+            step < n_steps)
+          {
+            const double before =
+              options.restoration() ? weighted_energy() : 0.;
+            refine_mesh();
+            if (options.restoration() && prm.output.verbose)
+              pcout << std::setprecision(10) << "  re-meshing: weighted energy "
+                    << before << " -> " << weighted_energy() << std::endl;
+          }
       }
     computing_timer.print_summary();
 

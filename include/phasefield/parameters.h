@@ -5,6 +5,8 @@
 
 #include <phasefield/lumped_operators.h>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -110,6 +112,20 @@ namespace PhaseField
     std::string  tau_expression;
     std::string  inner_tau_expression;
     unsigned int n_steps;
+    /**
+     * Start-up: this many extra steps before the n_steps steps of size
+     * tau, of sizes tau / 2^n_ramp_steps, ..., tau / 4, tau / 2.
+     */
+    unsigned int n_ramp_steps;
+
+    /** Size of time step @p step (1-based), see n_ramp_steps. */
+    double
+    step_size(const unsigned int step) const
+    {
+      return step <= n_ramp_steps ?
+               std::ldexp(tau, -static_cast<int>(n_ramp_steps - step + 1)) :
+               tau;
+    }
 
     /** Values after evaluate(). */
     double epsilon   = 0;

@@ -43,6 +43,16 @@ namespace PhaseField
      */
     std::function<bool(const dealii::Point<dim> &)> u_is_free;
 
+    /**
+     * Keep deal.II's mesh smoothing eliminate_unrefined_islands (refine a
+     * coarse cell surrounded by finer ones). With narrow-band coarsening
+     * far from the interface it can undo the coarsening of the previous
+     * re-meshing, so that a stationary interface makes the mesh alternate
+     * between two meshes (and the energy jump at every re-meshing); edge
+     * restoration switches it off.
+     */
+    bool refine_unrefined_islands = true;
+
     /** Name printed in the first line of the log. */
     std::string program_name = "willmore_flow";
 
@@ -120,6 +130,17 @@ namespace PhaseField
     /** Energies of the current state (Willmore energy of the scheme). */
     Energies
     compute_energies() const;
+    /** W + eta A of the current state (the `weighted_energy` column). */
+    double
+    weighted_energy() const;
+    /**
+     * The first term of the outer energy, eps ||U - U^k||^2_M / (2 tau),
+     * scaled like the energies (factor 3/4): by thesis Cor. 3.3, on a fixed
+     * mesh weighted_energy() after a step plus this is at most
+     * weighted_energy() before it, if the step found the minimiser.
+     */
+    double
+    dissipation(const double tau) const;
     /** Curvature field of the current state (see output_results()). */
     void
     compute_curvature(Vector &curvature) const;
