@@ -107,6 +107,25 @@ namespace PhaseField
 
 
 
+    /**
+     * dst = A diag(@p diagonal) A src for a symmetric operator A, i.e. the
+     * symmetric product of A, a diagonal and A; @p tmp is scratch space.
+     */
+    template <typename Operator>
+    void
+    apply_symmetric_product(const Operator                      &a,
+                            const TrilinosWrappers::MPI::Vector &diagonal,
+                            TrilinosWrappers::MPI::Vector       &tmp,
+                            TrilinosWrappers::MPI::Vector       &dst,
+                            const TrilinosWrappers::MPI::Vector &src)
+    {
+      a.vmult(tmp, src);
+      tmp.scale(diagonal);
+      a.vmult(dst, tmp);
+    }
+
+
+
     /** S = diag(d) + w Khat M^-1 Khat applied to a vector. */
     class ProductFormMatrix
     {
@@ -126,9 +145,7 @@ namespace PhaseField
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
-        k_hat.vmult(tmp, src);
-        tmp.scale(inverse_mass);
-        k_hat.vmult(dst, tmp);
+        apply_symmetric_product(k_hat, inverse_mass, tmp, dst, src);
         dst *= w;
         tmp = src;
         tmp.scale(d);
@@ -165,9 +182,7 @@ namespace PhaseField
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
-        multigrid.vmult(tmp, src);
-        tmp.scale(mass);
-        multigrid.vmult(dst, tmp);
+        apply_symmetric_product(multigrid, mass, tmp, dst, src);
       }
 
     private:
