@@ -1,12 +1,8 @@
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
-
 #include <phasefield/lumped_operators.h>
 
 namespace PhaseField
@@ -15,9 +11,9 @@ namespace PhaseField
 
   template <int dim>
   void
-  LumpedOperators<dim>::reinit(const DoFHandler<dim> &          dof_handler,
+  LumpedOperators<dim>::reinit(const DoFHandler<dim>           &dof_handler,
                                const AffineConstraints<double> &constraints,
-                               const MPI_Comm mpi_communicator,
+                               const MPI_Comm            mpi_communicator,
                                const StiffnessQuadrature stiffness_quadrature)
   {
     locally_owned_dofs = dof_handler.locally_owned_dofs();
@@ -39,13 +35,13 @@ namespace PhaseField
     const QGaussLobatto<dim> lumping_quadrature(2);
     const Quadrature<dim>    quadrature =
       stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
-        Quadrature<dim>(QGaussLobatto<dim>(2)) :
-        Quadrature<dim>(QGauss<dim>(2));
-    const auto &             fe = dof_handler.get_fe();
-    FEValues<dim>            fe_values(fe,
+           Quadrature<dim>(QGaussLobatto<dim>(2)) :
+           Quadrature<dim>(QGauss<dim>(2));
+    const auto   &fe = dof_handler.get_fe();
+    FEValues<dim> fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    FEValues<dim>            fe_lumped(fe,
+    FEValues<dim> fe_lumped(fe,
                             lumping_quadrature,
                             update_values | update_JxW_values);
 
@@ -53,8 +49,7 @@ namespace PhaseField
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     Vector<double>     cell_mass(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    double                               min_cell_mass =
-      std::numeric_limits<double>::max();
+    double min_cell_mass = std::numeric_limits<double>::max();
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -71,8 +66,7 @@ namespace PhaseField
                                      fe_values.JxW(q);
           for (unsigned int q = 0; q < lumping_quadrature.size(); ++q)
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              cell_mass(i) +=
-                fe_lumped.shape_value(i, q) * fe_lumped.JxW(q);
+              cell_mass(i) += fe_lumped.shape_value(i, q) * fe_lumped.JxW(q);
           min_cell_mass = std::min(min_cell_mass, cell_mass.linfty_norm());
 
           cell->get_dof_indices(dof_indices);
@@ -92,7 +86,8 @@ namespace PhaseField
     const unsigned int n_local = lumped_mass.locally_owned_size();
     for (unsigned int i = 0; i < n_local; ++i)
       {
-        const types::global_dof_index g = locally_owned_dofs.nth_index_in_set(i);
+        const types::global_dof_index g =
+          locally_owned_dofs.nth_index_in_set(i);
         if (constraints.is_constrained(g))
           {
             constrained_local_indices.push_back(i);
@@ -101,6 +96,40 @@ namespace PhaseField
         else
           inverse_lumped_mass.begin()[i] = 1. / lumped_mass.begin()[i];
       }
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::stiffness_plus_weighted_mass(
+    const double                         stiffness_factor,
+    const TrilinosWrappers::MPI::Vector &nodal_weight,
+    TrilinosWrappers::SparseMatrix      &matrix) const
+  {
+    matrix.copy_from(stiffness);
+    matrix *= stiffness_factor;
+    TrilinosWrappers::MPI::Vector weighted_mass(nodal_weight);
+    weighted_mass.scale(lumped_mass);
+    add_to_diagonal(weighted_mass, matrix);
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::add_to_diagonal(
+    const TrilinosWrappers::MPI::Vector &values,
+    TrilinosWrappers::SparseMatrix      &matrix) const
+  {
+    const unsigned int n = values.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g =
+          locally_owned_dofs.nth_index_in_set(i);
+        matrix.add(g, g, values.begin()[i]);
+      }
+    matrix.compress(VectorOperation::add);
   }
 
 
@@ -123,7 +152,7 @@ namespace PhaseField
     const TrilinosWrappers::MPI::Vector &y) const
   {
     const unsigned int n = x.locally_owned_size();
-    const double *     m = lumped_mass.begin();
+    const double      *m = lumped_mass.begin();
     double             s = 0;
     for (unsigned int i = 0; i < n; ++i)
       s += m[i] * x.begin()[i] * y.begin()[i];
@@ -150,7 +179,7 @@ namespace PhaseField
   LumpedOperators<dim>::dual_norm(const TrilinosWrappers::MPI::Vector &r) const
   {
     const unsigned int n     = r.locally_owned_size();
-    const double *     m_inv = inverse_lumped_mass.begin();
+    const double      *m_inv = inverse_lumped_mass.begin();
     double             s     = 0;
     for (unsigned int i = 0; i < n; ++i)
       s += m_inv[i] * r.begin()[i] * r.begin()[i];

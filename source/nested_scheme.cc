@@ -466,18 +466,23 @@ namespace PhaseField
                              const double                    shift,
                              TrilinosWrappers::SparseMatrix &k) const
   {
-    k.copy_from(ops.stiffness);
-    k *= coeff.inner_tau;
+    ops.stiffness_plus_weighted_mass(coeff.inner_tau,
+                                     k_hat_weight(v, shift),
+                                     k);
+  }
+
+
+
+  template <int dim>
+  typename NestedScheme<dim>::Vector
+  NestedScheme<dim>::k_hat_weight(const Vector &v, const double shift) const
+  {
+    Vector             weight(v);
     const double       c = coeff.c();
-    const double      *m = ops.lumped_mass.begin();
     const unsigned int n = v.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
-      {
-        const types::global_dof_index g =
-          ops.locally_owned_dofs.nth_index_in_set(i);
-        k.add(g, g, m[i] * (1 - shift + c * DoubleWell::d2_psi(v.begin()[i])));
-      }
-    k.compress(VectorOperation::add);
+      weight.begin()[i] = 1 - shift + c * DoubleWell::d2_psi(v.begin()[i]);
+    return weight;
   }
 
 
@@ -530,27 +535,19 @@ namespace PhaseField
         Vector                          weight(ops.inverse_lumped_mass);
         weight *= (1 + a);
         matrices.k_hat.mmult(s, matrices.k_hat, weight);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const types::global_dof_index g =
-              ops.locally_owned_dofs.nth_index_in_set(i);
-            s.add(g, g, diagonal.begin()[i]);
-          }
-        s.compress(VectorOperation::add);
+        ops.add_to_diagonal(diagonal, s);
       }
     else
       {
         // G = gamma M + sqrt((1+a)/b) Khat, so that b G M^-1 G / gamma^2
         // approximates S (see schur_mass_shift)
-        matrices.g.copy_from(matrices.k_hat);
-        matrices.g *= std::sqrt((1 + a) / b);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const types::global_dof_index g =
-              ops.locally_owned_dofs.nth_index_in_set(i);
-            matrices.g.add(g, g, schur_mass_shift * m[i]);
-          }
-        matrices.g.compress(VectorOperation::add);
+        const double scale  = std::sqrt((1 + a) / b);
+        Vector       weight = k_hat_weight(v, b);
+        weight *= scale;
+        weight.add(schur_mass_shift);
+        ops.stiffness_plus_weighted_mass(scale * coeff.inner_tau,
+                                         weight,
+                                         matrices.g);
       }
   }
 

@@ -1,6 +1,5 @@
-#include <phasefield/semi_implicit_scheme.h>
-
 #include <cmath>
+#include <phasefield/semi_implicit_scheme.h>
 
 namespace PhaseField
 {
@@ -13,7 +12,7 @@ namespace PhaseField
     const LumpedOperators<dim> &operators,
     const double                epsilon,
     const double                tau,
-    const BlockVector &         old_state)
+    const BlockVector          &old_state)
     : ops(operators)
     , epsilon(epsilon)
     , tau(tau)
@@ -25,14 +24,14 @@ namespace PhaseField
   template <int dim>
   void
   SemiImplicitScheme<dim>::nonlinear_coefficients(const BlockVector &z,
-                                                  Vector &           G,
-                                                  Vector &           g) const
+                                                  Vector            &G,
+                                                  Vector            &g) const
   {
     G = z.block(F::F);
     G += old_state.block(F::F);
     const unsigned int n  = G.locally_owned_size();
-    const double *     u  = z.block(F::U).begin();
-    const double *     uk = old_state.block(F::U).begin();
+    const double      *u  = z.block(F::U).begin();
+    const double      *uk = old_state.block(F::U).begin();
     g.reinit(G, true);
     for (unsigned int i = 0; i < n; ++i)
       g.begin()[i] = 1 - u[i] * u[i] - u[i] * uk[i] - uk[i] * uk[i];
@@ -57,10 +56,10 @@ namespace PhaseField
 
     const double       reaction = tau / std::pow(epsilon, 3);
     const unsigned int n        = G.locally_owned_size();
-    const double *     m        = ops.lumped_mass.begin();
-    const double *     u        = z.block(F::U).begin();
-    const double *     f        = z.block(F::F).begin();
-    const double *     uk       = old_state.block(F::U).begin();
+    const double      *m        = ops.lumped_mass.begin();
+    const double      *u        = z.block(F::U).begin();
+    const double      *f        = z.block(F::F).begin();
+    const double      *uk       = old_state.block(F::U).begin();
     for (unsigned int i = 0; i < n; ++i)
       {
         r_u.begin()[i] +=
@@ -103,47 +102,28 @@ namespace PhaseField
 
 
   template <int dim>
-  void
-  SemiImplicitScheme<dim>::stiffness_plus_diagonal(
-    const double                    shift,
-    const Vector &                  diagonal,
-    TrilinosWrappers::SparseMatrix &matrix) const
-  {
-    matrix.copy_from(ops.stiffness);
-    matrix *= shift;
-    const double *     m = ops.lumped_mass.begin();
-    const unsigned int n = diagonal.locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      matrix.add(ops.locally_owned_dofs.nth_index_in_set(i),
-                 ops.locally_owned_dofs.nth_index_in_set(i),
-                 m[i] * diagonal.begin()[i]);
-    matrix.compress(VectorOperation::add);
-  }
-
-
-
-  template <int dim>
   unsigned int
-  SemiImplicitScheme<dim>::solve_newton_system(const BlockVector &  z,
-                                               const BlockVector &  r,
-                                               BlockVector &        dz,
-                                               ReducedSystemSolver &solver) const
+  SemiImplicitScheme<dim>::solve_newton_system(
+    const BlockVector   &z,
+    const BlockVector   &r,
+    BlockVector         &dz,
+    ReducedSystemSolver &solver) const
   {
     Vector G, g;
     nonlinear_coefficients(z, G, g);
     const double       reaction = tau / std::pow(epsilon, 3);
     const unsigned int n        = G.locally_owned_size();
-    const double *     u        = z.block(F::U).begin();
-    const double *     uk       = old_state.block(F::U).begin();
+    const double      *u        = z.block(F::U).begin();
+    const double      *uk       = old_state.block(F::U).begin();
 
     // J_UF = -(tau/(2 eps)) L + reaction M[g],  J_FU = eps^2 L + M[6U^2-2]
     TrilinosWrappers::SparseMatrix j_uf, j_fu, s;
     g *= reaction;
-    stiffness_plus_diagonal(-tau / (2 * epsilon), g, j_uf);
+    ops.stiffness_plus_weighted_mass(-tau / (2 * epsilon), g, j_uf);
     Vector diagonal(G);
     for (unsigned int i = 0; i < n; ++i)
       diagonal.begin()[i] = 6 * u[i] * u[i] - 2;
-    stiffness_plus_diagonal(epsilon * epsilon, diagonal, j_fu);
+    ops.stiffness_plus_weighted_mass(epsilon * epsilon, diagonal, j_fu);
 
     // S = J_UU - J_UF (eps M)^-1 J_FU
     Vector weight(ops.inverse_lumped_mass);
@@ -151,10 +131,9 @@ namespace PhaseField
     j_uf.mmult(s, j_fu, weight);
     const double *m = ops.lumped_mass.begin();
     for (unsigned int i = 0; i < n; ++i)
-      s.add(ops.locally_owned_dofs.nth_index_in_set(i),
-            ops.locally_owned_dofs.nth_index_in_set(i),
-            m[i] * (1 - reaction * (2 * u[i] + uk[i]) * G.begin()[i]));
-    s.compress(VectorOperation::add);
+      diagonal.begin()[i] =
+        m[i] * (1 - reaction * (2 * u[i] + uk[i]) * G.begin()[i]);
+    ops.add_to_diagonal(diagonal, s);
 
     // rhs = -R_U + J_UF (eps M)^-1 R_F
     const Vector &r_u = r.block(F::U);
@@ -166,8 +145,8 @@ namespace PhaseField
     rhs -= r_u;
     ops.zero_constrained(rhs);
 
-    Vector &           du         = dz.block(F::U);
-    Vector &           df         = dz.block(F::F);
+    Vector            &du         = dz.block(F::U);
+    Vector            &df         = dz.block(F::F);
     const unsigned int iterations = solver.solve(s, du, rhs);
     ops.zero_constrained(du);
 
@@ -186,29 +165,29 @@ namespace PhaseField
   void
   SemiImplicitScheme<dim>::jacobian_vmult(const BlockVector &z,
                                           const BlockVector &x,
-                                          BlockVector &      y) const
+                                          BlockVector       &y) const
   {
     Vector G, g;
     nonlinear_coefficients(z, G, g);
-    const double reaction = tau / std::pow(epsilon, 3);
-    const Vector &xu      = x.block(F::U);
-    const Vector &xf      = x.block(F::F);
-    Vector &      yu      = y.block(F::U);
-    Vector &      yf      = y.block(F::F);
+    const double  reaction = tau / std::pow(epsilon, 3);
+    const Vector &xu       = x.block(F::U);
+    const Vector &xf       = x.block(F::F);
+    Vector       &yu       = y.block(F::U);
+    Vector       &yf       = y.block(F::F);
     ops.stiffness.vmult(yu, xf);
     yu *= -tau / (2 * epsilon);
     ops.stiffness.vmult(yf, xu);
     yf *= epsilon * epsilon;
-    const double *     m  = ops.lumped_mass.begin();
-    const double *     u  = z.block(F::U).begin();
-    const double *     uk = old_state.block(F::U).begin();
+    const double      *m  = ops.lumped_mass.begin();
+    const double      *u  = z.block(F::U).begin();
+    const double      *uk = old_state.block(F::U).begin();
     const unsigned int n  = G.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
         yu.begin()[i] +=
-          m[i] * ((1 - reaction * (2 * u[i] + uk[i]) * G.begin()[i]) *
-                    xu.begin()[i] +
-                  reaction * g.begin()[i] * xf.begin()[i]);
+          m[i] *
+          ((1 - reaction * (2 * u[i] + uk[i]) * G.begin()[i]) * xu.begin()[i] +
+           reaction * g.begin()[i] * xf.begin()[i]);
         yf.begin()[i] += m[i] * ((6 * u[i] * u[i] - 2) * xu.begin()[i] +
                                  epsilon * xf.begin()[i]);
       }
@@ -224,10 +203,10 @@ namespace PhaseField
   {
     // R_F = 0: F = (eps M)^-1 (2 M[1-U^2] U - eps^2 L U)
     const Vector &u = z.block(F::U);
-    Vector &      f = z.block(F::F);
+    Vector       &f = z.block(F::F);
     ops.stiffness.vmult(f, u);
     f *= -epsilon * epsilon;
-    const double *     m = ops.lumped_mass.begin();
+    const double      *m = ops.lumped_mass.begin();
     const unsigned int n = u.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -247,8 +226,8 @@ namespace PhaseField
   {
     Energies e = phase_field_energies(ops, z.block(F::U), epsilon);
     // (3/4) (1/(2 eps)) Int F^2; 3/4 normalises the tanh profile.
-    e.willmore = 0.75 * 0.5 / epsilon *
-                 ops.mass_product(z.block(F::F), z.block(F::F));
+    e.willmore =
+      0.75 * 0.5 / epsilon * ops.mass_product(z.block(F::F), z.block(F::F));
     return e;
   }
 

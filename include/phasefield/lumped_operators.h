@@ -2,13 +2,10 @@
 #define phasefield_lumped_operators_h
 
 #include <deal.II/base/index_set.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <vector>
 
 namespace PhaseField
@@ -61,7 +58,7 @@ namespace PhaseField
      * @p stiffness_quadrature.
      */
     void
-    reinit(const dealii::DoFHandler<dim> &          dof_handler,
+    reinit(const dealii::DoFHandler<dim>           &dof_handler,
            const dealii::AffineConstraints<double> &constraints,
            const MPI_Comm                           mpi_communicator,
            const StiffnessQuadrature                stiffness_quadrature =
@@ -85,6 +82,24 @@ namespace PhaseField
 
     dealii::IndexSet locally_owned_dofs;
     dealii::IndexSet locally_relevant_dofs;
+
+    /**
+     * @p matrix = @p stiffness_factor L + M[@p nodal_weight], i.e. the
+     * stiffness matrix plus the lumped mass weighted nodally.
+     */
+    void
+    stiffness_plus_weighted_mass(
+      const double                                 stiffness_factor,
+      const dealii::TrilinosWrappers::MPI::Vector &nodal_weight,
+      dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
+
+    /**
+     * Add @p values (one per locally owned DoF) to the diagonal of
+     * @p matrix, whose sparsity pattern contains the diagonal, and compress.
+     */
+    void
+    add_to_diagonal(const dealii::TrilinosWrappers::MPI::Vector &values,
+                    dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
 
     /** Set all constrained entries of @p vector to zero. */
     void

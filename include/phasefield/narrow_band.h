@@ -2,11 +2,8 @@
 #define phasefield_narrow_band_h
 
 #include <deal.II/base/function.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/trilinos_vector.h>
 
 namespace PhaseField
@@ -28,7 +25,7 @@ namespace PhaseField
     void
     refine_around_zero_level_set(
       dealii::parallel::distributed::Triangulation<dim> &triangulation,
-      const dealii::Function<dim> &                      signed_distance,
+      const dealii::Function<dim>                       &signed_distance,
       const double                                       band_width,
       const double                                       epsilon,
       const unsigned int                                 finest_level);
@@ -43,12 +40,11 @@ namespace PhaseField
      */
     template <int dim>
     bool
-    flag_cells_from_phase_field(
-      const dealii::DoFHandler<dim> &              dof_handler,
-      const dealii::TrilinosWrappers::MPI::Vector &u,
-      const double                                 band_width,
-      const unsigned int                           finest_level,
-      const unsigned int                           coarsest_level);
+    flag_cells_from_phase_field(const dealii::DoFHandler<dim> &dof_handler,
+                                const dealii::TrilinosWrappers::MPI::Vector &u,
+                                const double       band_width,
+                                const unsigned int finest_level,
+                                const unsigned int coarsest_level);
   } // namespace NarrowBand
 } // namespace PhaseField
 

@@ -428,6 +428,10 @@ namespace PhaseField
      */
     static constexpr double schur_mass_shift = 4;
 
+    /** The nodal weight 1 - shift + c Psi''(V) of the mass in build_k(). */
+    Vector
+    k_hat_weight(const Vector &v, const double shift) const;
+
     /** K(V) = M + c M[Psi''(V)] + ttau L, shifted by -shift*M. */
     void
     build_k(const Vector                           &v,

@@ -2,13 +2,10 @@
 #define phasefield_newton_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
-
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
-
+#include <functional>
 #include <phasefield/nested_scheme.h>
 #include <phasefield/parameters.h>
-
-#include <functional>
 
 namespace PhaseField
 {
@@ -38,9 +35,9 @@ namespace PhaseField
      * Solve J(z) dz = -r with the linear solver passed to newton_solve();
      * returns the number of Krylov iterations.
      */
-    std::function<unsigned int(const BlockVector &  z,
-                               const BlockVector &  r,
-                               BlockVector &        dz,
+    std::function<unsigned int(const BlockVector   &z,
+                               const BlockVector   &r,
+                               BlockVector         &dz,
                                ReducedSystemSolver &solver)>
       solve;
     /** Make a trial state conforming (hanging nodes). */
@@ -63,12 +60,12 @@ namespace PhaseField
    * the report says so and @p z holds the last accepted iterate.
    */
   StepReport
-  newton_solve(const NonlinearSystem &             system,
+  newton_solve(const NonlinearSystem                      &system,
                dealii::TrilinosWrappers::MPI::BlockVector &z,
-               const NewtonParameters &            parameters,
-               ReducedSystemSolver &               linear_solver,
-               const dealii::ConditionalOStream &  pcout,
-               const bool                          verbose);
+               const NewtonParameters                     &parameters,
+               ReducedSystemSolver                        &linear_solver,
+               const dealii::ConditionalOStream           &pcout,
+               const bool                                  verbose);
 } // namespace PhaseField
 
 #endif

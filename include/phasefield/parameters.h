@@ -1,12 +1,9 @@
 #ifndef phasefield_parameters_h
 #define phasefield_parameters_h
 
-#include <deal.II/base/parameter_handler.h>
-
-#include <phasefield/lumped_operators.h>
-
 #include <cmath>
-
+#include <deal.II/base/parameter_handler.h>
+#include <phasefield/lumped_operators.h>
 #include <string>
 #include <vector>
 
@@ -223,7 +220,8 @@ namespace PhaseField
    * that names the file and the parameter.
    */
   void
-  read_parameter_file(dealii::ParameterHandler &prm, const std::string &filename);
+  read_parameter_file(dealii::ParameterHandler &prm,
+                      const std::string        &filename);
 
   /**
    * Declare the top-level entries that every program has (DESIGN.md
@@ -232,7 +230,7 @@ namespace PhaseField
    */
   void
   declare_common_parameters(dealii::ParameterHandler &prm,
-                            const std::string &       output_description);
+                            const std::string        &output_description);
 } // namespace PhaseField
 
 #endif

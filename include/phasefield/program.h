@@ -2,7 +2,6 @@
 #define phasefield_program_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <functional>
 #include <string>
 
@@ -18,9 +17,9 @@ namespace PhaseField
    * program.
    */
   int
-  run_program(int                                             argc,
-              char **                                         argv,
-              const std::string &                             program_name,
+  run_program(int                argc,
+              char             **argv,
+              const std::string &program_name,
               const std::function<void(dealii::ParameterHandler &)> &declare,
               const std::function<void(dealii::ParameterHandler &)> &run);
 } // namespace PhaseField

@@ -4,7 +4,6 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <phasefield/lumped_operators.h>
 #include <phasefield/nested_scheme.h>
 
@@ -31,8 +30,8 @@ namespace PhaseField
    *
    * and its exact (non-symmetric) Jacobian is
    *
-   *   J = [ M[1 - (tau/eps^3)(2U+U^k) G]   -(tau/(2 eps)) L + (tau/eps^3) M[g] ]
-   *       [ eps^2 L + M[6U^2 - 2]           eps M                              ].
+   *   J = [ M[1 - (tau/eps^3)(2U+U^k) G]   -(tau/(2 eps)) L + (tau/eps^3) M[g]
+   * ] [ eps^2 L + M[6U^2 - 2]           eps M                              ].
    *
    * (The thesis prints -6/eps M[U^2] in dF2/dU; the sign is +.) Since M is
    * diagonal, F is eliminated exactly: dU solves
@@ -57,7 +56,7 @@ namespace PhaseField
     SemiImplicitScheme(const LumpedOperators<dim> &operators,
                        const double                epsilon,
                        const double                tau,
-                       const BlockVector &         old_state);
+                       const BlockVector          &old_state);
 
     /** Residual R(Z). */
     void
@@ -80,16 +79,16 @@ namespace PhaseField
      * iterations.
      */
     unsigned int
-    solve_newton_system(const BlockVector &  z,
-                        const BlockVector &  r,
-                        BlockVector &        dz,
+    solve_newton_system(const BlockVector   &z,
+                        const BlockVector   &r,
+                        BlockVector         &dz,
                         ReducedSystemSolver &solver) const;
 
     /** y = J(Z) x (used by tests). */
     void
     jacobian_vmult(const BlockVector &z,
                    const BlockVector &x,
-                   BlockVector &      y) const;
+                   BlockVector       &y) const;
 
     /** Set F from U by R_F(U, F) = 0 (a diagonal solve). */
     void
@@ -104,16 +103,10 @@ namespace PhaseField
     void
     nonlinear_coefficients(const BlockVector &z, Vector &G, Vector &g) const;
 
-    /** shift * L plus the diagonal matrix M[diagonal], into @p matrix. */
-    void
-    stiffness_plus_diagonal(const double    shift,
-                            const Vector &  diagonal,
-                            dealii::TrilinosWrappers::SparseMatrix &matrix) const;
-
     const LumpedOperators<dim> &ops;
     const double                epsilon;
     const double                tau;
-    const BlockVector &         old_state;
+    const BlockVector          &old_state;
   };
 } // namespace PhaseField
 

@@ -2,10 +2,8 @@
 #define phasefield_shapes_h
 
 #include <deal.II/base/function.h>
-
-#include <phasefield/parameters.h>
-
 #include <memory>
+#include <phasefield/parameters.h>
 
 namespace PhaseField
 {

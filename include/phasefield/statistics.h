@@ -2,7 +2,6 @@
 #define phasefield_statistics_h
 
 #include <deal.II/base/mpi.h>
-
 #include <fstream>
 #include <string>
 #include <vector>
@@ -17,7 +16,7 @@ namespace PhaseField
   class StatisticsFile
   {
   public:
-    StatisticsFile(const std::string &             filename,
+    StatisticsFile(const std::string              &filename,
                    const std::vector<std::string> &columns,
                    const MPI_Comm                  mpi_communicator);
 

@@ -165,9 +165,9 @@ namespace PhaseField
 
     const WillmoreParameters         &prm;
     const WillmoreProblemOptions<dim> options;
-    MPI_Comm                  mpi_communicator;
-    dealii::ConditionalOStream pcout;
-    dealii::TimerOutput        computing_timer;
+    MPI_Comm                          mpi_communicator;
+    dealii::ConditionalOStream        pcout;
+    dealii::TimerOutput               computing_timer;
 
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     dealii::FE_Q<dim>                                 fe;
