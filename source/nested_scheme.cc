@@ -3,6 +3,7 @@
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <cmath>
+#include <limits>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -683,8 +684,8 @@ namespace PhaseField
           {
             j.add(index(g, Field::U),
                   index(g, Field::U),
-                  m[i] *
-                    ((1 + a) + area_factor * c_u * DoubleWell::d2_psi(u[i])));
+                  m[i] * ((1 + a + coeff.u_shift) +
+                          area_factor * c_u * DoubleWell::d2_psi(u[i])));
             j.add(index(g, Field::U), index(g, Field::V), -a * m[i]);
             j.add(index(g, Field::U), index(g, Field::P), -p_scale * m[i]);
             j.add(index(g, Field::V), index(g, Field::U), -a * m[i]);
@@ -787,7 +788,8 @@ namespace PhaseField
         const double xp = x.block(Field::P).begin()[i];
         const double d  = c * DoubleWell::d3_psi(z.block(Field::V).begin()[i]) *
                          z.block(Field::P).begin()[i];
-        y.block(Field::U).begin()[i] = m[i] * ((1 + a) * xu - a * xv - xp);
+        y.block(Field::U).begin()[i] =
+          m[i] * ((1 + a + coeff.u_shift) * xu - a * xv - xp);
         y.block(Field::V).begin()[i] += m[i] * (-a * xu + (a + d) * xv);
         y.block(Field::P).begin()[i] += -m[i] * xu;
       }
@@ -814,38 +816,77 @@ namespace PhaseField
 
 
   template <int dim>
+  void
+  NestedScheme<dim>::inner_residual(const Vector &u,
+                                    const Vector &v,
+                                    Vector       &r) const
+  {
+    const double       c = coeff.c();
+    const double      *m = ops.lumped_mass.begin();
+    const unsigned int n = u.locally_owned_size();
+    ops.stiffness.vmult(r, v);
+    r *= coeff.inner_tau;
+    for (unsigned int i = 0; i < n; ++i)
+      r.begin()[i] += m[i] * ((v.begin()[i] - u.begin()[i]) +
+                              c * DoubleWell::d_psi(v.begin()[i]));
+    ops.zero_constrained(r);
+  }
+
+
+
+  template <int dim>
   unsigned int
   NestedScheme<dim>::initialize_v_and_p(BlockVector         &z,
                                         ReducedSystemSolver &solver,
                                         const double         tolerance) const
   {
+    z.block(Field::V) = z.block(Field::U);
+    Vector r(z.block(Field::U));
+    inner_residual(z.block(Field::U), z.block(Field::V), r);
+    // below 1e-14 the residual is round-off
+    constexpr double absolute_floor = 1e-14;
+    return solve_inner_problem(z,
+                               solver,
+                               std::max(tolerance * ops.dual_norm(r),
+                                        absolute_floor));
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NestedScheme<dim>::solve_inner_problem(BlockVector         &z,
+                                         ReducedSystemSolver &solver,
+                                         const double         tolerance) const
+  {
     const double       a = coeff.a();
-    const double       c = coeff.c();
     const Vector      &u = z.block(Field::U);
     Vector            &v = z.block(Field::V);
     Vector            &p = z.block(Field::P);
     const double      *m = ops.lumped_mass.begin();
     const unsigned int n = u.locally_owned_size();
 
-    // V: Newton on R_P(U, V) = M(V-U) + c M Psi'(V) + ttau L V = 0,
-    // whose Jacobian is K(V).
-    v = u;
-    Vector       r(u), dv(u);
-    unsigned int iterations = 0;
-    double       r0         = -1;
-    for (; iterations < 50; ++iterations)
+    // V: Newton on R_P(U, V) = M(V-U) + c M Psi'(V) + ttau L V = 0, whose
+    // Jacobian K(V) is positive definite for ttau < eps^2/2 (convex inner
+    // energy)
+    constexpr unsigned int max_inner_iterations = 50;
+    Vector                 r(u), dv(u);
+    unsigned int           iterations = 0;
+    // Newton stagnates at the round-off of R_P (about 1e-15 in this norm)
+    constexpr double roundoff_level = 1e-12;
+    double           previous_norm  = std::numeric_limits<double>::max();
+    for (;; ++iterations)
       {
-        ops.stiffness.vmult(r, v);
-        r *= coeff.inner_tau;
-        for (unsigned int i = 0; i < n; ++i)
-          r.begin()[i] += m[i] * ((v.begin()[i] - u.begin()[i]) +
-                                  c * DoubleWell::d_psi(v.begin()[i]));
-        ops.zero_constrained(r);
+        inner_residual(u, v, r);
         const double norm = ops.dual_norm(r);
-        if (r0 < 0)
-          r0 = norm;
-        if (norm <= tolerance * r0 || norm < 1e-14)
+        if (norm <= tolerance ||
+            (norm <= roundoff_level && norm >= 0.5 * previous_norm))
           break;
+        previous_norm = norm;
+        AssertThrow(iterations < max_inner_iterations,
+                    ExcMessage("The inner problem (V for given U, Algorithm "
+                               "3.1) did not converge in 50 Newton "
+                               "iterations."));
         TrilinosWrappers::SparseMatrix k;
         build_k(v, 0., k);
         r *= -1;
@@ -853,9 +894,6 @@ namespace PhaseField
         ops.zero_constrained(dv);
         v += dv;
       }
-    AssertThrow(iterations < 50,
-                ExcMessage("The initialisation of V (Algorithm 3.1) did not "
-                           "converge in 50 Newton iterations."));
 
     // P: K(V) P = -a M (V - U)
     TrilinosWrappers::SparseMatrix k;
@@ -866,6 +904,30 @@ namespace PhaseField
     solver.solve(k, p, r);
     ops.zero_constrained(p);
     return iterations;
+  }
+
+
+
+  template <int dim>
+  double
+  NestedScheme<dim>::outer_energy(const Vector      &old_u,
+                                  const BlockVector &z) const
+  {
+    const Vector &u = z.block(Field::U);
+    Vector        difference(u);
+    difference -= old_u;
+    double energy = 0.5 * ops.mass_product(difference, difference);
+    difference = z.block(Field::V);
+    difference -= u;
+    energy += 0.5 * coeff.a() * ops.mass_product(difference, difference);
+    if (coeff.area_weight != 0)
+      {
+        // 2 tau eta a_eps[U] / (2 eps), with a_eps = (4/3) area
+        const double area = phase_field_energies(ops, u, coeff.epsilon).area;
+        energy += coeff.tau * coeff.area_weight * (4. / 3.) * area /
+                  coeff.epsilon;
+      }
+    return energy;
   }
 
 

@@ -366,12 +366,44 @@ namespace PhaseField
           scheme.residual(old_u, z, r);
         };
         connect_scheme(scheme, system);
-        return newton_solve(system,
-                            solution,
-                            prm.newton,
-                            *linear_solver,
-                            pcout,
-                            prm.output.verbose);
+        if (!options.restoration())
+          return newton_solve(system,
+                              solution,
+                              prm.newton,
+                              *linear_solver,
+                              pcout,
+                              prm.output.verbose);
+
+        // Edge restoration: minimise the outer energy over U with V, P
+        // re-solved for every trial U, so that the energy decreases at
+        // every iteration (minimizing_newton_solve()). The inner problem
+        // is convex; its own solver keeps the factorisation of K(V).
+        ReducedSystemSolver inner_solver(LinearSolverType::direct,
+                                         prm.linear_solver.relative_tolerance,
+                                         prm.linear_solver.max_iterations);
+        // R_P to round-off (about 1e-15 in this norm): an inexact V
+        // changes the outer energy to first order, and R_U by a times it
+        constexpr double inner_tolerance = 1e-14;
+        system.project_and_merit         = [&](BlockVector &z) {
+          scheme.solve_inner_problem(z, inner_solver, inner_tolerance);
+          return scheme.outer_energy(old_u, z);
+        };
+        system.solve_shifted = [&](const BlockVector   &z,
+                                   const BlockVector   &r,
+                                   BlockVector         &dz,
+                                   ReducedSystemSolver &solver,
+                                   const double         shift) {
+          NestedCoefficients shifted = coefficients(tau);
+          shifted.u_shift            = shift;
+          return NestedScheme<dim>(operators, shifted)
+            .solve_newton_system(z, r, dz, solver);
+        };
+        return minimizing_newton_solve(system,
+                                       solution,
+                                       prm.newton,
+                                       *linear_solver,
+                                       pcout,
+                                       prm.output.verbose);
       }
 
     const SemiImplicitScheme<dim> scheme(operators,

@@ -3,7 +3,11 @@
 // eliminated Newton solve (NestedScheme::solve_newton_system) solves
 // J dZ = -R, in 2D and 3D, on an adaptive mesh with hanging nodes; in 2D
 // also with the area term of edge restoration (eta > 0) and U held fixed
-// at the DoFs with x < 0.3 (the 3-field solve).
+// at the DoFs with x < 0.3 (the 3-field solve, also with a
+// Levenberg-Marquardt shift of the UU block). With the area term, R_U at a
+// state with V, P re-solved for U (NestedScheme::solve_inner_problem) is
+// the gradient of the outer energy NestedScheme::outer_energy, the merit
+// function of minimizing_newton_solve.
 
 #include "adaptive_test_mesh.h"
 #include "tests.h"
@@ -30,7 +34,8 @@ template <int dim>
 void
 check(const LinearSolverType solver_type,
       const double           eta      = 0,
-      const bool             fix_some = false)
+      const bool             fix_some = false,
+      const double           shift    = 0)
 {
   const MPI_Comm                         comm = MPI_COMM_WORLD;
   const Testing::AdaptiveTestMesh<dim>   mesh;
@@ -46,6 +51,7 @@ check(const LinearSolverType solver_type,
   coeff.tau       = 0.03 * h;
   coeff.inner_tau = h * h;
   coeff.area_weight = eta;
+  coeff.u_shift     = shift;
   IndexSet fixed(dof_handler.n_dofs());
   if (fix_some)
     {
@@ -103,11 +109,15 @@ check(const LinearSolverType solver_type,
   difference -= rp;
   if (eta > 0)
     Testing::log() << "eta = " << eta
-                   << (fix_some ? ", U fixed at x < 0.3" : "") << ": ";
+                   << (fix_some ? ", U fixed at x < 0.3" : "")
+                   << (shift > 0 ? ", shift " + std::to_string(int(shift)) :
+                                   std::string())
+                   << ": ";
   Testing::log() << dim << "D, " << dof_handler.n_dofs() << " DoFs, "
                  << constraints.n_constraints() << " hanging-node constraints"
                  << (constraints.n_constraints() > 0 ? " (> 0)" : "") << std::endl;
-  for (unsigned int b = 0; b < 3; ++b)
+  // the shifted matrix is not the Jacobian: only its solve is checked
+  for (unsigned int b = 0; b < 3 && shift == 0; ++b)
     {
       const double rel = ops.dual_norm(difference.block(b)) /
                          ops.dual_norm(jx.block(b));
@@ -127,6 +137,29 @@ check(const LinearSolverType solver_type,
                  << std::endl;
   if (rel >= 1e-6)
     Testing::log() << "    value " << rel << std::endl;
+
+  if (eta == 0)
+    return;
+  // gradient of the reduced outer energy: V and P re-solved for every U
+  BlockVector y(z);
+  y.block(Field::U) = z.block(Field::U);
+  scheme.solve_inner_problem(y, solver, 1e-13);
+  scheme.residual(old_u, y, r);
+  const double slope = r.block(Field::U) * x.block(Field::U);
+  const auto   energy_at = [&](const double s) {
+    BlockVector trial(y);
+    trial.block(Field::U).add(s, x.block(Field::U));
+    scheme.solve_inner_problem(trial, solver, 1e-13);
+    return scheme.outer_energy(old_u, trial);
+  };
+  const double fd_step = 1e-5;
+  const double fd      = (energy_at(fd_step) - energy_at(-fd_step)) / (2 * fd_step);
+  const double gradient_error = std::abs(fd - slope) / std::abs(slope);
+  Testing::log() << "  |d energy/dU x - R_U.x| / |R_U.x| "
+                 << (gradient_error < 1e-6 ? "< 1e-6" : "TOO LARGE")
+                 << std::endl;
+  if (gradient_error >= 1e-6)
+    Testing::log() << "    value " << gradient_error << std::endl;
 }
 
 int
@@ -136,6 +169,7 @@ main(int argc, char **argv)
   check<2>(LinearSolverType::direct);
   check<2>(LinearSolverType::direct, 1.);
   check<2>(LinearSolverType::direct, 10., true);
+  check<2>(LinearSolverType::direct, 10., true, 3.);
   check<3>(LinearSolverType::direct);
   check<3>(LinearSolverType::iterative);
 }

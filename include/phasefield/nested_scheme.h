@@ -70,6 +70,15 @@ namespace PhaseField
     const dealii::IndexSet *fixed_u = nullptr;
 
     /**
+     * Levenberg-Marquardt shift mu of the restoration Newton matrix: the
+     * UU block gains mu M at the free U values, which turns the Newton
+     * direction towards the steepest descent direction -M^-1 R_U of the
+     * outer energy as mu grows (minimizing_newton_solve()). Only used by
+     * the 3-field system; 0 is Newton's method.
+     */
+    double u_shift = 0;
+
+    /**
      * True if the area term or fixed U values are present: the UU block of
      * the Jacobian is then not diagonal, and the Newton system is solved as
      * one 3-field system (NestedScheme::solve_newton_system()).
@@ -366,13 +375,40 @@ namespace PhaseField
                    BlockVector       &y) const;
 
     /**
-     * Algorithm 3.1: given U in @p z, solve R_P(U, V) = 0 for V (Newton)
-     * and then R_V(U, V, P) = 0 for P. Returns Newton iterations.
+     * Algorithm 3.1: given U in @p z, solve R_P(U, V) = 0 for V (Newton
+     * from V = U, to @p tolerance relative to the residual there) and then
+     * R_V(U, V, P) = 0 for P (solve_inner_problem()). Returns Newton
+     * iterations.
      */
     unsigned int
     initialize_v_and_p(BlockVector         &z,
                        ReducedSystemSolver &solver,
                        const double         tolerance) const;
+
+    /**
+     * Given U in @p z, solve the inner problem R_P(U, V) = 0 for V by
+     * Newton's method starting from the V in @p z, until
+     * ||R_P||_{M^-1} <= @p tolerance, and then the adjoint equation
+     * R_V(U, V, P) = 0 for P. Afterwards R_U is the gradient of the
+     * reduced outer energy outer_energy() with respect to U. Returns the
+     * Newton iterations.
+     */
+    unsigned int
+    solve_inner_problem(BlockVector         &z,
+                        ReducedSystemSolver &solver,
+                        const double         tolerance) const;
+
+    /**
+     * The outer energy of the step from @p old_u at the state @p z,
+     * divided by 2 eps like the residual:
+     *   (1/2)|U-U^k|_M^2 + (a/2)|V-U|_M^2
+     *     + tau eta ((1/2) U.LU + M Psi(U).1 / (2 eps^2)).
+     * With V = V(U) the inner minimiser (solve_inner_problem()) this is a
+     * function of U alone whose gradient is R_U, the merit function of
+     * minimizing_newton_solve().
+     */
+    double
+    outer_energy(const Vector &old_u, const BlockVector &z) const;
 
     /** Energies of the state @p z in geometric units. */
     Energies
@@ -427,6 +463,10 @@ namespace PhaseField
      * in all for gamma = 1 / 2 / 4 / 8.
      */
     static constexpr double schur_mass_shift = 4;
+
+    /** r = R_P(U, V) = M(V-U) + c M Psi'(V) + ttau L V. */
+    void
+    inner_residual(const Vector &u, const Vector &v, Vector &r) const;
 
     /** The nodal weight 1 - shift + c Psi''(V) of the mass in build_k(). */
     Vector

@@ -47,6 +47,26 @@ namespace PhaseField
      * is relative to the round-off of the residual evaluation.
      */
     std::function<double(const BlockVector &z)> term_scale;
+
+    /**
+     * Only for minimizing_newton_solve(): re-solve the dependent fields of
+     * @p z for its free ones (the constraint of a constrained minimisation
+     * problem) and return the merit function there, an energy whose
+     * gradient with respect to the free fields is their residual.
+     */
+    std::function<double(BlockVector &z)> project_and_merit;
+
+    /**
+     * Only for minimizing_newton_solve(): solve() with the Jacobian shifted
+     * by @p shift times the mass matrix in the free fields (a
+     * Levenberg-Marquardt shift).
+     */
+    std::function<unsigned int(const BlockVector   &z,
+                               const BlockVector   &r,
+                               BlockVector         &dz,
+                               ReducedSystemSolver &solver,
+                               const double         shift)>
+      solve_shifted;
   };
 
   /**
@@ -66,6 +86,34 @@ namespace PhaseField
                ReducedSystemSolver                        &linear_solver,
                const dealii::ConditionalOStream           &pcout,
                const bool                                  verbose);
+
+  /**
+   * Newton's method as a descent method for a constrained minimisation
+   * problem: the minimisation of NonlinearSystem::project_and_merit over
+   * the free fields (edge restoration: the outer energy over U, with V the
+   * inner minimiser and P its adjoint). Every iterate satisfies the
+   * constraint, so that the residual of the free fields is the gradient of
+   * the merit function and the Newton direction is a descent direction
+   * whenever the shifted reduced Hessian is positive definite.
+   *
+   * Each iteration solves the shifted Newton system
+   * (NonlinearSystem::solve_shifted) with the current shift mu (0 at the
+   * start of a step); if the update is not a descent direction, mu is
+   * raised (1, then 10 times larger) and the system solved again. The
+   * update is then halved until the merit function decreases by the
+   * Armijo condition phi(z + lambda dz) <= phi(z) + 1e-4 lambda R.dz (up
+   * to its round-off). A full step lowers mu tenfold, a step damped twice
+   * or more raises it. Unlike newton_solve(), the merit never increases,
+   * so that the method cannot converge to a maximum or saddle point of the
+   * merit it started below. Stopping test and report as in newton_solve().
+   */
+  StepReport
+  minimizing_newton_solve(const NonlinearSystem                      &system,
+                          dealii::TrilinosWrappers::MPI::BlockVector &z,
+                          const NewtonParameters                     &parameters,
+                          ReducedSystemSolver              &linear_solver,
+                          const dealii::ConditionalOStream &pcout,
+                          const bool                        verbose);
 } // namespace PhaseField
 
 #endif
