@@ -3,13 +3,13 @@
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <cmath>
-#include <limits>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
+#include <limits>
 #include <phasefield/nested_scheme.h>
 
 namespace PhaseField
@@ -845,10 +845,8 @@ namespace PhaseField
     inner_residual(z.block(Field::U), z.block(Field::V), r);
     // below 1e-14 the residual is round-off
     constexpr double absolute_floor = 1e-14;
-    return solve_inner_problem(z,
-                               solver,
-                               std::max(tolerance * ops.dual_norm(r),
-                                        absolute_floor));
+    return solve_inner_problem(
+      z, solver, std::max(tolerance * ops.dual_norm(r), absolute_floor));
   }
 
 
@@ -917,15 +915,15 @@ namespace PhaseField
     Vector        difference(u);
     difference -= old_u;
     double energy = 0.5 * ops.mass_product(difference, difference);
-    difference = z.block(Field::V);
+    difference    = z.block(Field::V);
     difference -= u;
     energy += 0.5 * coeff.a() * ops.mass_product(difference, difference);
     if (coeff.area_weight != 0)
       {
         // 2 tau eta a_eps[U] / (2 eps), with a_eps = (4/3) area
         const double area = phase_field_energies(ops, u, coeff.epsilon).area;
-        energy += coeff.tau * coeff.area_weight * (4. / 3.) * area /
-                  coeff.epsilon;
+        energy +=
+          coeff.tau * coeff.area_weight * (4. / 3.) * area / coeff.epsilon;
       }
     return energy;
   }

@@ -1,9 +1,8 @@
-#include <phasefield/newton_solver.h>
-
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <phasefield/newton_solver.h>
 
 namespace PhaseField
 {
@@ -54,11 +53,11 @@ namespace PhaseField
   } // namespace
 
   StepReport
-  newton_solve(const NonlinearSystem &             system,
+  newton_solve(const NonlinearSystem              &system,
                TrilinosWrappers::MPI::BlockVector &z,
-               const NewtonParameters &            parameters,
-               ReducedSystemSolver &               linear_solver,
-               const ConditionalOStream &          pcout,
+               const NewtonParameters             &parameters,
+               ReducedSystemSolver                &linear_solver,
+               const ConditionalOStream           &pcout,
                const bool                          verbose)
   {
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
@@ -71,9 +70,9 @@ namespace PhaseField
     constexpr double linear_safety_factor   = 0.05;
 
     StepReport   report;
-    double       norm   = 0;
-    const double target = start(system, z, residual, parameters, pcout,
-                                verbose, norm, report);
+    double       norm = 0;
+    const double target =
+      start(system, z, residual, parameters, pcout, verbose, norm, report);
     if (report.converged || !std::isfinite(norm))
       return report;
 
@@ -105,8 +104,9 @@ namespace PhaseField
             system.distribute_constraints(trial);
             system.residual(trial, residual);
             trial_norm = system.norm(residual);
-            const bool watchdog = damping == 0 && !watchdog_used &&
-                                  trial_norm < parameters.watchdog_factor * norm;
+            const bool watchdog =
+              damping == 0 && !watchdog_used &&
+              trial_norm < parameters.watchdog_factor * norm;
             if (std::isfinite(trial_norm) &&
                 (trial_norm < norm || trial_norm <= target || watchdog))
               break;
@@ -171,11 +171,11 @@ namespace PhaseField
     // doublings of a full step along a direction of negative curvature
     constexpr unsigned int max_expansions = 4;
 
-    double merit = system.project_and_merit(z);
+    double       merit = system.project_and_merit(z);
     StepReport   report;
-    double       norm   = 0;
-    const double target = start(system, z, residual, parameters, pcout,
-                                verbose, norm, report);
+    double       norm = 0;
+    const double target =
+      start(system, z, residual, parameters, pcout, verbose, norm, report);
     if (report.converged || !std::isfinite(norm) || !std::isfinite(merit))
       return report;
 
@@ -193,7 +193,8 @@ namespace PhaseField
             // Newton decrement -R.dz below the round-off of the merit: a
             // minimum to machine precision, even if the residual norm is
             // above the target (its round-off grows with a = tau/ttau^2)
-            if (shift == 0 && std::abs(slope) <= merit_roundoff * std::abs(merit))
+            if (shift == 0 &&
+                std::abs(slope) <= merit_roundoff * std::abs(merit))
               {
                 if (verbose)
                   pcout << "    Newton iteration " << it
@@ -239,8 +240,8 @@ namespace PhaseField
             // the quadratic model is poor: closer to steepest descent
             shift = std::max(first_shift, shift * shift_factor);
             pcout << "    Newton iteration " << it
-                  << ": no damped update decreases the energy, shift "
-                  << shift << std::endl;
+                  << ": no damped update decreases the energy, shift " << shift
+                  << std::endl;
             continue;
           }
         // A full step that gains more than the quadratic model of a
@@ -269,8 +270,8 @@ namespace PhaseField
         // full steps: back towards Newton's method; repeated halving:
         // towards steepest descent
         if (damping == 0)
-          shift = shift / shift_factor < first_shift ? 0. :
-                                                       shift / shift_factor;
+          shift =
+            shift / shift_factor < first_shift ? 0. : shift / shift_factor;
         else if (damping >= 2)
           shift = std::max(first_shift, shift * shift_factor);
 
@@ -280,9 +281,9 @@ namespace PhaseField
         norm                       = system.norm(residual);
         report.final_residual_norm = norm;
         if (verbose)
-          pcout << "    Newton " << it << ": residual " << norm
-                << ", energy " << std::setprecision(12) << merit
-                << std::setprecision(6) << std::endl;
+          pcout << "    Newton " << it << ": residual " << norm << ", energy "
+                << std::setprecision(12) << merit << std::setprecision(6)
+                << std::endl;
         if (norm <= target)
           {
             report.converged = true;

@@ -1,28 +1,21 @@
+#include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/distributed/solution_transfer.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/mapping_q1.h>
-
 #include <deal.II/grid/grid_generator.h>
-
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
-
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
 #include <phasefield/narrow_band.h>
 #include <phasefield/semi_implicit_scheme.h>
 #include <phasefield/shapes.h>
 #include <phasefield/statistics.h>
 #include <phasefield/willmore_problem.h>
-
-#include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <iomanip>
-#include <map>
 
 namespace PhaseField
 {
@@ -42,9 +35,9 @@ namespace PhaseField
       system.norm       = [&scheme](const BlockVector &r) {
         return scheme.residual_norm(r);
       };
-      system.solve = [&scheme](const BlockVector &  z,
-                               const BlockVector &  r,
-                               BlockVector &        dz,
+      system.solve = [&scheme](const BlockVector   &z,
+                               const BlockVector   &r,
+                               BlockVector         &dz,
                                ReducedSystemSolver &solver) {
         return scheme.solve_newton_system(z, r, dz, solver);
       };
@@ -108,8 +101,8 @@ namespace PhaseField
 
     LinearSolverType type = prm.linear_solver.type;
     if (type == LinearSolverType::automatic)
-      type = (dim == 2 ? LinearSolverType::direct :
-                         LinearSolverType::iterative);
+      type =
+        (dim == 2 ? LinearSolverType::direct : LinearSolverType::iterative);
     // the semi-implicit scheme's Jacobian is not symmetric
     linear_solver = std::make_unique<ReducedSystemSolver>(
       type,
@@ -319,19 +312,18 @@ namespace PhaseField
   void
   WillmoreProblem<dim>::initialize_fields()
   {
-    TimerOutput::Scope                 t(computing_timer, "initialisation");
+    TimerOutput::Scope                   t(computing_timer, "initialisation");
     const Shapes::PhaseFieldProfile<dim> u0(*signed_distance,
                                             prm.model.epsilon);
     VectorTools::interpolate(dof_handler, u0, solution.block(Field::U));
     if (prm.model.scheme == Scheme::nested)
       {
-        const NestedScheme<dim> scheme(operators,
-                                       coefficients(prm.model.tau));
+        const NestedScheme<dim> scheme(operators, coefficients(prm.model.tau));
         // its own solver: the factorisations of K are no use for S later
-        ReducedSystemSolver  solver(linear_solver->type(),
+        ReducedSystemSolver solver(linear_solver->type(),
                                    prm.linear_solver.relative_tolerance,
                                    prm.linear_solver.max_iterations);
-        constexpr double initialization_tolerance = 1e-10;
+        constexpr double    initialization_tolerance = 1e-10;
         scheme.initialize_v_and_p(solution, solver, initialization_tolerance);
       }
     else
@@ -361,7 +353,7 @@ namespace PhaseField
     if (prm.model.scheme == Scheme::nested)
       {
         const NestedScheme<dim> scheme(operators, coefficients(tau));
-        const Vector &          old_u = old_solution.block(Field::U);
+        const Vector           &old_u = old_solution.block(Field::U);
         system.residual = [&](const BlockVector &z, BlockVector &r) {
           scheme.residual(old_u, z, r);
         };
@@ -461,7 +453,7 @@ namespace PhaseField
   void
   WillmoreProblem<dim>::refine_mesh()
   {
-    TimerOutput::Scope t(computing_timer, "mesh: adapt");
+    TimerOutput::Scope  t(computing_timer, "mesh: adapt");
     std::vector<Vector> ghosted(n_fields());
     for (unsigned int b = 0; b < n_fields(); ++b)
       {
@@ -487,7 +479,7 @@ namespace PhaseField
       return;
 
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
-    std::vector<const Vector *> in;
+    std::vector<const Vector *>                          in;
     for (const auto &g : ghosted)
       in.push_back(&g);
     transfer.prepare_for_coarsening_and_refinement(in);
@@ -529,12 +521,8 @@ namespace PhaseField
              mpi_communicator);
     u = solution.block(Field::U);
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
-    VectorTools::integrate_difference(dof_handler,
-                                      u,
-                                      exact,
-                                      cellwise,
-                                      QGauss<dim>(3),
-                                      VectorTools::L2_norm);
+    VectorTools::integrate_difference(
+      dof_handler, u, exact, cellwise, QGauss<dim>(3), VectorTools::L2_norm);
     return VectorTools::compute_global_error(triangulation,
                                              cellwise,
                                              VectorTools::L2_norm);
@@ -547,7 +535,7 @@ namespace PhaseField
   WillmoreProblem<dim>::output_results(const unsigned int step,
                                        const double       time)
   {
-    TimerOutput::Scope  t(computing_timer, "output");
+    TimerOutput::Scope             t(computing_timer, "output");
     const std::vector<std::string> names =
       prm.model.scheme == Scheme::nested ?
         std::vector<std::string>{"U", "V", "P", "curvature"} :
@@ -614,8 +602,9 @@ namespace PhaseField
           << " MPI rank(s), "
           << (linear_solver->type() == LinearSolverType::direct ?
                 "direct (MUMPS)" :
-                (prm.model.scheme == Scheme::nested ? "iterative (CG + AMG)" :
-                                                      "iterative (GMRES + AMG)"))
+                (prm.model.scheme == Scheme::nested ?
+                   "iterative (CG + AMG)" :
+                   "iterative (GMRES + AMG)"))
           << " linear solver" << std::endl;
     if (prm.model.scheme == Scheme::nested &&
         prm.model.inner_tau >= 0.5 * std::pow(prm.model.epsilon, 2))
@@ -646,13 +635,13 @@ namespace PhaseField
 
     const unsigned int n_steps = prm.model.n_ramp_steps + prm.model.n_steps;
     double             time    = 0;
-    const auto record = [&](const unsigned int step,
-                            const StepReport & report,
+    const auto         record  = [&](const unsigned int step,
+                            const StepReport  &report,
                             const double       tau) {
-      const Energies          e     = compute_energies();
-      const double            error = compute_l2_error(time);
-      const double            dofs  = double(n_fields()) * dof_handler.n_dofs();
-      const double            cells = triangulation.n_global_active_cells();
+      const Energies e     = compute_energies();
+      const double   error = compute_l2_error(time);
+      const double   dofs  = double(n_fields()) * dof_handler.n_dofs();
+      const double   cells = triangulation.n_global_active_cells();
       statistics.add_row(concatenate<double>({double(step),
                                               time,
                                               double(report.newton_iterations),
@@ -678,8 +667,7 @@ namespace PhaseField
       pcout << "  cells " << cells << "  [" << std::setprecision(3)
             << wall_timer.wall_time() << " s]" << std::endl;
       if (prm.output.vtu_interval > 0 &&
-          (step % prm.output.vtu_interval == 0 ||
-           step == n_steps))
+          (step % prm.output.vtu_interval == 0 || step == n_steps))
         output_results(step, time);
     };
     record(0, StepReport(), prm.model.tau);

@@ -37,19 +37,19 @@ check(const LinearSolverType solver_type,
       const bool             fix_some = false,
       const double           shift    = 0)
 {
-  const MPI_Comm                         comm = MPI_COMM_WORLD;
-  const Testing::AdaptiveTestMesh<dim>   mesh;
-  const double                           eps         = mesh.eps;
-  const double                           h           = mesh.h;
-  const auto &                           dof_handler = mesh.dof_handler;
-  const auto &                           constraints = mesh.constraints;
-  const auto &                           sphere      = mesh.sphere;
-  const LumpedOperators<dim> &           ops         = mesh.operators;
+  const MPI_Comm                       comm = MPI_COMM_WORLD;
+  const Testing::AdaptiveTestMesh<dim> mesh;
+  const double                         eps         = mesh.eps;
+  const double                         h           = mesh.h;
+  const auto                          &dof_handler = mesh.dof_handler;
+  const auto                          &constraints = mesh.constraints;
+  const auto                          &sphere      = mesh.sphere;
+  const LumpedOperators<dim>          &ops         = mesh.operators;
 
   NestedCoefficients coeff;
-  coeff.epsilon   = eps;
-  coeff.tau       = 0.03 * h;
-  coeff.inner_tau = h * h;
+  coeff.epsilon     = eps;
+  coeff.tau         = 0.03 * h;
+  coeff.inner_tau   = h * h;
   coeff.area_weight = eta;
   coeff.u_shift     = shift;
   IndexSet fixed(dof_handler.n_dofs());
@@ -66,12 +66,12 @@ check(const LinearSolverType solver_type,
       coeff.fixed_u = &fixed;
     }
   const NestedScheme<dim> scheme(ops, coeff);
-  ReducedSystemSolver solver(solver_type, 1e-12, 2000);
+  ReducedSystemSolver     solver(solver_type, 1e-12, 2000);
 
   using BlockVector = TrilinosWrappers::MPI::BlockVector;
   const std::vector<IndexSet> parts(3, ops.locally_owned_dofs);
-  BlockVector                 z(parts, comm), x(parts, comm), r(parts, comm),
-    rp(parts, comm), rm(parts, comm), jx(parts, comm), dz(parts, comm);
+  BlockVector z(parts, comm), x(parts, comm), r(parts, comm), rp(parts, comm),
+    rm(parts, comm), jx(parts, comm), dz(parts, comm);
   const Shapes::PhaseFieldProfile<dim> u0(sphere, eps);
   VectorTools::interpolate(dof_handler, u0, z.block(Field::U));
   scheme.initialize_v_and_p(z, solver, 1e-10);
@@ -115,12 +115,13 @@ check(const LinearSolverType solver_type,
                    << ": ";
   Testing::log() << dim << "D, " << dof_handler.n_dofs() << " DoFs, "
                  << constraints.n_constraints() << " hanging-node constraints"
-                 << (constraints.n_constraints() > 0 ? " (> 0)" : "") << std::endl;
+                 << (constraints.n_constraints() > 0 ? " (> 0)" : "")
+                 << std::endl;
   // the shifted matrix is not the Jacobian: only its solve is checked
   for (unsigned int b = 0; b < 3 && shift == 0; ++b)
     {
-      const double rel = ops.dual_norm(difference.block(b)) /
-                         ops.dual_norm(jx.block(b));
+      const double rel =
+        ops.dual_norm(difference.block(b)) / ops.dual_norm(jx.block(b));
       Testing::log() << "  block " << b << ": |J x - FD| / |J x| "
                      << (rel < 1e-6 ? "< 1e-6" : "TOO LARGE") << std::endl;
       if (rel >= 1e-6)
@@ -133,8 +134,8 @@ check(const LinearSolverType solver_type,
   scheme.jacobian_vmult(z, dz, jx);
   jx += r;
   const double rel = scheme.residual_norm(jx) / scheme.residual_norm(r);
-  Testing::log() << "  |J dz + R| / |R| " << (rel < 1e-6 ? "< 1e-6" : "TOO LARGE")
-                 << std::endl;
+  Testing::log() << "  |J dz + R| / |R| "
+                 << (rel < 1e-6 ? "< 1e-6" : "TOO LARGE") << std::endl;
   if (rel >= 1e-6)
     Testing::log() << "    value " << rel << std::endl;
 
@@ -145,7 +146,7 @@ check(const LinearSolverType solver_type,
   y.block(Field::U) = z.block(Field::U);
   scheme.solve_inner_problem(y, solver, 1e-13);
   scheme.residual(old_u, y, r);
-  const double slope = r.block(Field::U) * x.block(Field::U);
+  const double slope     = r.block(Field::U) * x.block(Field::U);
   const auto   energy_at = [&](const double s) {
     BlockVector trial(y);
     trial.block(Field::U).add(s, x.block(Field::U));
@@ -153,7 +154,7 @@ check(const LinearSolverType solver_type,
     return scheme.outer_energy(old_u, trial);
   };
   const double fd_step = 1e-5;
-  const double fd      = (energy_at(fd_step) - energy_at(-fd_step)) / (2 * fd_step);
+  const double fd = (energy_at(fd_step) - energy_at(-fd_step)) / (2 * fd_step);
   const double gradient_error = std::abs(fd - slope) / std::abs(slope);
   Testing::log() << "  |d energy/dU x - R_U.x| / |R_U.x| "
                  << (gradient_error < 1e-6 ? "< 1e-6" : "TOO LARGE")

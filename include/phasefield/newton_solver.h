@@ -102,15 +102,21 @@ namespace PhaseField
    * raised (1, then 10 times larger) and the system solved again. The
    * update is then halved until the merit function decreases by the
    * Armijo condition phi(z + lambda dz) <= phi(z) + 1e-4 lambda R.dz (up
-   * to its round-off). A full step lowers mu tenfold, a step damped twice
-   * or more raises it. Unlike newton_solve(), the merit never increases,
-   * so that the method cannot converge to a maximum or saddle point of the
-   * merit it started below. Stopping test and report as in newton_solve().
+   * to its round-off); a full step that gains more than a convex
+   * quadratic model promises (negative curvature along dz) is doubled
+   * while the merit keeps decreasing, at most 4 times. A full step lowers
+   * mu tenfold, a step damped twice or more raises it. Unlike
+   * newton_solve(), the merit never increases, so that the method cannot
+   * converge to a maximum or saddle point of the merit it started below.
+   * Stopping test and report as in newton_solve(), and also when the
+   * Newton decrement |R.dz| (mu = 0) is below 1e-14 times the merit, i.e.
+   * at a minimum to round-off, where the residual norm may stagnate above
+   * a tight target.
    */
   StepReport
   minimizing_newton_solve(const NonlinearSystem                      &system,
                           dealii::TrilinosWrappers::MPI::BlockVector &z,
-                          const NewtonParameters                     &parameters,
+                          const NewtonParameters           &parameters,
                           ReducedSystemSolver              &linear_solver,
                           const dealii::ConditionalOStream &pcout,
                           const bool                        verbose);
