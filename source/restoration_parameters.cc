@@ -132,6 +132,10 @@ namespace PhaseField
     if (willmore.dimension != 2)
       throw InputError("edge_restoration works in 2D only: <Dimension> must "
                        "be 2.");
+    if (willmore.model.scheme != Scheme::nested)
+      throw InputError("edge_restoration needs <Time stepping / Scheme> = "
+                       "nested: the area term and the fixed values outside "
+                       "the region are part of the nested scheme only.");
     const std::string &shape = willmore.geometry.shape;
     if (shape == "image" && restoration.image_file.empty())
       throw InputError("Shape = image needs <Geometry / Image file>.");

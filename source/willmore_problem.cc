@@ -373,10 +373,7 @@ namespace PhaseField
         ReducedSystemSolver inner_solver(LinearSolverType::direct,
                                          prm.linear_solver.relative_tolerance,
                                          prm.linear_solver.max_iterations);
-        // R_P to round-off (about 1e-15 in this norm): an inexact V
-        // changes the outer energy to first order, and R_U by a times it
-        constexpr double inner_tolerance = 1e-14;
-        system.project_and_merit         = [&](BlockVector &z) {
+        system.project_and_merit = [&](BlockVector &z) {
           scheme.solve_inner_problem(z, inner_solver, inner_tolerance);
           return scheme.outer_energy(old_u, z);
         };
@@ -408,6 +405,19 @@ namespace PhaseField
     connect_scheme(scheme, system);
     return newton_solve(
       system, solution, prm.newton, *linear_solver, pcout, prm.output.verbose);
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::solve_inner_problem(const double tau)
+  {
+    ReducedSystemSolver solver(LinearSolverType::direct,
+                               prm.linear_solver.relative_tolerance,
+                               prm.linear_solver.max_iterations);
+    NestedScheme<dim>(operators, coefficients(tau))
+      .solve_inner_problem(solution, solver, inner_tolerance);
   }
 
 
@@ -744,6 +754,8 @@ namespace PhaseField
             const double before =
               options.restoration() ? weighted_energy() : 0.;
             refine_mesh();
+            if (options.restoration())
+              solve_inner_problem(state_tau);
             if (options.restoration() && prm.output.verbose)
               pcout << std::setprecision(10) << "  re-meshing: weighted energy "
                     << before << " -> " << weighted_energy() << std::endl;

@@ -118,6 +118,21 @@ namespace PhaseField
     solve_time_step(const double tau);
     void
     refine_mesh();
+    /**
+     * Edge restoration: V and P of the current state re-solved for its U,
+     * the inner minimiser and its adjoint for the step size @p tau (after
+     * re-meshing, the transferred V is not the inner minimiser on the new
+     * mesh, and the energy of the state would not be the one the next step
+     * decreases).
+     */
+    void
+    solve_inner_problem(const double tau);
+    /**
+     * Tolerance of ||R_P||_{M^-1} in the inner problem of edge restoration:
+     * round-off is about 1e-15; an inexact V changes the outer energy to
+     * first order and R_U by a = tau/ttau^2 times it.
+     */
+    static constexpr double inner_tolerance = 1e-14;
     double
     compute_l2_error(const double time) const;
     void
