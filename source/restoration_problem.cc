@@ -72,6 +72,10 @@ namespace PhaseField
     options.area_weight  = restoration.eta;
     // a stationary restored edge must not make the mesh alternate
     options.refine_unrefined_islands = false;
+    // coarsen only where 1 - |U| < 1 - tanh(6) = 1.2e-5 (Band width 4): the
+    // energy then changes by about 1e-10 at a re-meshing, not 1e-7
+    constexpr double coarsening_band_factor = 1.5;
+    options.coarsening_band_factor          = coarsening_band_factor;
     options.signed_distance =
       Images::create_damaged_image(prm.willmore.geometry, restoration);
     const Box2D region = restoration.region;

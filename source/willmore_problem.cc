@@ -476,7 +476,9 @@ namespace PhaseField
                                             ghosted[Field::U],
                                             prm.mesh.band_width,
                                             prm.mesh.finest_level,
-                                            prm.mesh.coarsest_level);
+                                            prm.mesh.coarsest_level,
+                                            options.coarsening_band_factor *
+                                              prm.mesh.band_width);
     // smoothing removes flags that cannot be executed (2:1 balance,
     // incomplete sibling groups); keep mesh and factorisation if none is left
     triangulation.prepare_coarsening_and_refinement();

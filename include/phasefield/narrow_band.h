@@ -34,9 +34,11 @@ namespace PhaseField
      * Set refinement and coarsening flags from the phase field @p u
      * (ghosted): a cell is in the band if one of its vertices has
      * |u| < tanh(band_width) or u changes sign on it. Cells in the band
-     * are flagged for refinement up to @p finest_level, all others for
-     * coarsening down to @p coarsest_level. Returns true if any flag was
-     * set on any rank (a collective operation).
+     * are flagged for refinement up to @p finest_level. Cells outside the
+     * wider band of @p coarsening_band_width (>= band_width; by default
+     * the same) are flagged for coarsening down to @p coarsest_level, the
+     * cells in between keep their level. Returns true if any flag was set
+     * on any rank (a collective operation).
      */
     template <int dim>
     bool
@@ -44,7 +46,8 @@ namespace PhaseField
                                 const dealii::TrilinosWrappers::MPI::Vector &u,
                                 const double       band_width,
                                 const unsigned int finest_level,
-                                const unsigned int coarsest_level);
+                                const unsigned int coarsest_level,
+                                const double       coarsening_band_width = 0);
   } // namespace NarrowBand
 } // namespace PhaseField
 

@@ -53,6 +53,15 @@ namespace PhaseField
      */
     bool refine_unrefined_islands = true;
 
+    /**
+     * Cells are coarsened only outside the band of this many times
+     * `Mesh / Band width` (hysteresis; 1: coarsen everything outside the
+     * refinement band). Coarsening where 1 - |U| is not negligible changes
+     * the discrete energy; edge restoration, whose energy must decrease
+     * from step to step, uses a wider coarsening band.
+     */
+    double coarsening_band_factor = 1;
+
     /** Name printed in the first line of the log. */
     std::string program_name = "willmore_flow";
 
