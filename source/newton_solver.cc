@@ -179,7 +179,10 @@ namespace PhaseField
     if (report.converged || !std::isfinite(norm) || !std::isfinite(merit))
       return report;
 
-    double shift = 0;
+    double     shift       = 0;
+    const auto raise_shift = [&]() {
+      shift = std::max(first_shift, shift * shift_factor);
+    };
     for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
       {
         report.newton_iterations = it;
@@ -205,7 +208,7 @@ namespace PhaseField
               }
             if (slope < 0)
               break;
-            shift = std::max(first_shift, shift * shift_factor);
+            raise_shift();
             if (shift > max_shift)
               {
                 pcout << "    Newton iteration " << it
@@ -238,7 +241,7 @@ namespace PhaseField
         if (damping > parameters.max_damping_steps)
           {
             // the quadratic model is poor: closer to steepest descent
-            shift = std::max(first_shift, shift * shift_factor);
+            raise_shift();
             pcout << "    Newton iteration " << it
                   << ": no damped update decreases the energy, shift " << shift
                   << std::endl;
@@ -273,7 +276,7 @@ namespace PhaseField
           shift =
             shift / shift_factor < first_shift ? 0. : shift / shift_factor;
         else if (damping >= 2)
-          shift = std::max(first_shift, shift * shift_factor);
+          raise_shift();
 
         z     = trial;
         merit = trial_merit;
