@@ -1,8 +1,8 @@
 // Parameters written as expressions in h (4*h, h^2, 0.03*h, 2^-6), and
 // the error messages for malformed or non-positive values.
 
-#include <phasefield/parameters.h>
-#include <phasefield/shapes.h>
+#include <phasefield/core/parameters.h>
+#include <phasefield/geometry/shapes.h>
 
 #include "tests.h"
 

@@ -20,9 +20,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <phasefield/narrow_band.h>
-#include <phasefield/semi_implicit_scheme.h>
-#include <phasefield/shapes.h>
+#include <phasefield/schemes/semi_implicit_scheme.h>
+#include <phasefield/geometry/shapes.h>
 
 #include "adaptive_test_mesh.h"
 #include "tests.h"
@@ -55,9 +54,9 @@ check(const LinearSolverType    solver_type,
   VectorTools::interpolate(dof_handler,
                            u0,
                            old_state.block(SemiImplicitField::U));
-  const SemiImplicitScheme<dim> scheme(ops, eps, 0.03 * h, old_state);
+  SemiImplicitStep<dim> scheme(mesh.discretization, eps, 0.03 * h, old_state);
   scheme.initialize_f(old_state);
-  ReducedSystemSolver solver(solver_type, 1e-12, 2000, /*symmetric=*/false);
+  LinearSolver solver(solver_type, 1e-12, 2000, /*symmetric=*/false);
 
   // A generic state and direction: smooth perturbations of both fields.
   Functions::CosineFunction<dim> wave;
@@ -113,7 +112,7 @@ check(const LinearSolverType    solver_type,
 
   // Newton solve: J dz = -r
   scheme.residual(z, r);
-  scheme.solve_newton_system(z, r, dz, solver);
+  scheme.solve_jacobian(z, r, dz, solver);
   scheme.jacobian_vmult(z, dz, jx);
   jx += r;
   const double rel = scheme.residual_norm(jx) / scheme.residual_norm(r);

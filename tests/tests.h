@@ -1,8 +1,8 @@
 // Small replacement of deal.II's tests.h (which deal.II does not install):
 // every test writes what it checks into the file "output", which the test
 // harness compares with the .output file using numdiff.
-#ifndef phasefield_tests_h
-#define phasefield_tests_h
+#ifndef phasefield_tests_tests_h
+#define phasefield_tests_tests_h
 
 #include <deal.II/base/mpi.h>
 
@@ -13,6 +13,11 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <phasefield/core/parameters.h>
+#include <phasefield/problems/restoration_parameters.h>
+#include <phasefield/problems/restoration_problem.h>
+#include <phasefield/problems/willmore_problem.h>
 
 namespace Testing
 {
@@ -70,10 +75,6 @@ namespace Testing
   }
 } // namespace Testing
 
-#endif
-
-#include <phasefield/parameters.h>
-#include <phasefield/willmore_problem.h>
 
 namespace Testing
 {
@@ -127,8 +128,6 @@ namespace Testing
   }
 } // namespace Testing
 
-#include <phasefield/restoration_parameters.h>
-#include <phasefield/restoration_problem.h>
 
 namespace Testing
 {
@@ -211,3 +210,5 @@ namespace Testing
           << (ok ? "yes" : "NO") << std::endl;
   }
 } // namespace Testing
+
+#endif
