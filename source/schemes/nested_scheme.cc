@@ -420,6 +420,48 @@ namespace PhaseField
 
   template <int dim>
   void
+  NestedStep<dim>::reinit_full_jacobian(
+    TrilinosWrappers::SparseMatrix &j) const
+  {
+    const auto                   &L      = ops.stiffness;
+    const IndexSet               &owned  = ops.locally_owned_dofs;
+    const unsigned int            n      = owned.n_elements();
+    const types::global_dof_index n_dofs = owned.size();
+    const auto index = [](const types::global_dof_index g,
+                          const unsigned int field) { return 3 * g + field; };
+
+    IndexSet owned3(3 * n_dofs);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        owned3.add_range(index(g, 0), index(g, 0) + 3);
+      }
+    owned3.compress();
+
+    // the nodal 3x3 blocks but PP, the stiffness pattern in UU, VP, PV
+    DynamicSparsityPattern dsp(3 * n_dofs, 3 * n_dofs, owned3);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g = owned.nth_index_in_set(i);
+        for (unsigned int row = 0; row < 3; ++row)
+          for (unsigned int col = 0; col < 3; ++col)
+            if (!(row == Field::P && col == Field::P))
+              dsp.add(index(g, row), index(g, col));
+        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
+          {
+            const types::global_dof_index col = entry->column();
+            dsp.add(index(g, Field::U), index(col, Field::U));
+            dsp.add(index(g, Field::V), index(col, Field::P));
+            dsp.add(index(g, Field::P), index(col, Field::V));
+          }
+      }
+    j.reinit(owned3, owned3, dsp, discretization.get_mpi_communicator());
+  }
+
+
+
+  template <int dim>
+  void
   NestedStep<dim>::assemble_full_jacobian(
     const BlockVector              &z,
     const double                    shift,
@@ -430,8 +472,7 @@ namespace PhaseField
     const auto        &L           = ops.stiffness;
     const IndexSet    &owned       = ops.locally_owned_dofs;
     const unsigned int n           = owned.n_elements();
-    const types::global_dof_index n_dofs = owned.size();
-    const double                 *m      = ops.lumped_mass.begin();
+    const double      *m           = ops.lumped_mass.begin();
     const double                 *u      = z.block(Field::U).begin();
     const double                 *v      = z.block(Field::V).begin();
     const double                 *p      = z.block(Field::P).begin();
@@ -449,32 +490,7 @@ namespace PhaseField
     const double p_scale = a;
     const auto   index   = [](const types::global_dof_index g,
                           const unsigned int field) { return 3 * g + field; };
-
-    IndexSet owned3(3 * n_dofs);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const types::global_dof_index g = owned.nth_index_in_set(i);
-        owned3.add_range(index(g, 0), index(g, 0) + 3);
-      }
-    owned3.compress();
-
-    DynamicSparsityPattern dsp(3 * n_dofs, 3 * n_dofs, owned3);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const types::global_dof_index g = owned.nth_index_in_set(i);
-        for (unsigned int row = 0; row < 3; ++row)
-          for (unsigned int col = 0; col < 3; ++col)
-            if (!(row == Field::P && col == Field::P))
-              dsp.add(index(g, row), index(g, col));
-        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
-          {
-            const types::global_dof_index col = entry->column();
-            dsp.add(index(g, Field::U), index(col, Field::U));
-            dsp.add(index(g, Field::V), index(col, Field::P));
-            dsp.add(index(g, Field::P), index(col, Field::V));
-          }
-      }
-    j.reinit(owned3, owned3, dsp, z.block(0).get_mpi_communicator());
+    reinit_full_jacobian(j);
 
     for (unsigned int i = 0; i < n; ++i)
       {

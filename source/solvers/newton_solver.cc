@@ -8,6 +8,61 @@ namespace PhaseField
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** Where the backtracking along a Newton update stopped. */
+    struct Backtracking
+    {
+      /** Number of halvings (max_damping_steps + 1: none accepted). */
+      unsigned int damping;
+      /** The step length taken. */
+      double lambda;
+      /** The residual norm there. */
+      double norm;
+    };
+
+
+
+    /**
+     * trial = z + lambda update for lambda = 1, 1/2, ... until the
+     * residual norm decreases below @p norm, reaches @p target, or (the
+     * full step, if @p watchdog_available) stays below
+     * NewtonControl::watchdog_factor times @p norm; without line search
+     * the full step. @p residual holds R(trial) on return.
+     */
+    Backtracking
+    backtrack(NonlinearSystem                          &system,
+              const TrilinosWrappers::MPI::BlockVector &z,
+              const TrilinosWrappers::MPI::BlockVector &update,
+              TrilinosWrappers::MPI::BlockVector       &trial,
+              TrilinosWrappers::MPI::BlockVector       &residual,
+              const NewtonControl                      &control,
+              const double                              norm,
+              const double                              target,
+              const bool                                watchdog_available)
+    {
+      Backtracking b{0, 1, std::numeric_limits<double>::quiet_NaN()};
+      for (; b.damping <= control.max_damping_steps;
+           ++b.damping, b.lambda *= 0.5)
+        {
+          trial = z;
+          trial.add(b.lambda, update);
+          system.distribute_constraints(trial);
+          system.residual(trial, residual);
+          b.norm              = system.residual_norm(residual);
+          const bool watchdog = b.damping == 0 && watchdog_available &&
+                                b.norm < control.watchdog_factor * norm;
+          if (!control.line_search ||
+              (std::isfinite(b.norm) &&
+               (b.norm < norm || b.norm <= target || watchdog)))
+            break;
+        }
+      return b;
+    }
+  } // namespace
+
+
+
 
   StepReport
   newton_solve(NonlinearSystem                    &system,
@@ -52,25 +107,18 @@ namespace PhaseField
         report.linear_iterations += linear_iterations;
         report.newton_iterations = it;
 
-        double       lambda     = 1;
-        double       trial_norm = std::numeric_limits<double>::quiet_NaN();
-        unsigned int damping    = 0;
-        for (; damping <= control.max_damping_steps;
-             ++damping, lambda *= 0.5)
-          {
-            trial = z;
-            trial.add(lambda, update);
-            system.distribute_constraints(trial);
-            system.residual(trial, residual);
-            trial_norm = system.residual_norm(residual);
-            const bool watchdog =
-              damping == 0 && !watchdog_used &&
-              trial_norm < control.watchdog_factor * norm;
-            if (!control.line_search ||
-                (std::isfinite(trial_norm) &&
-                 (trial_norm < norm || trial_norm <= target || watchdog)))
-              break;
-          }
+        const Backtracking step = backtrack(system,
+                                            z,
+                                            update,
+                                            trial,
+                                            residual,
+                                            control,
+                                            norm,
+                                            target,
+                                            !watchdog_used);
+        const unsigned int damping    = step.damping;
+        const double       lambda     = step.lambda;
+        const double       trial_norm = step.norm;
         if (damping > control.max_damping_steps)
           {
             pcout << "    Newton iteration " << it

@@ -312,6 +312,10 @@ namespace PhaseField
                            const double                            shift,
                            dealii::TrilinosWrappers::SparseMatrix &j) const;
 
+    /** The sparsity pattern of assemble_full_jacobian() in @p j. */
+    void
+    reinit_full_jacobian(dealii::TrilinosWrappers::SparseMatrix &j) const;
+
     /** J dZ = -R with the assembled 3-field Jacobian (shifted by shift M). */
     unsigned int
     solve_full_system(const BlockVector &z,
