@@ -5,7 +5,6 @@
 #define phasefield_tests_adaptive_test_mesh_h
 
 #include <deal.II/base/mpi.h>
-
 #include <phasefield/core/parameters.h>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/mesh/discretization.h>

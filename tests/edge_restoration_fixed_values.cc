@@ -9,8 +9,8 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <map>
 #include <phasefield/geometry/images.h>
-#include <phasefield/problems/restoration_problem.h>
 #include <phasefield/geometry/shapes.h>
+#include <phasefield/problems/restoration_problem.h>
 
 int
 main(int argc, char **argv)

@@ -13,7 +13,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  dealii::ParameterHandler prm;
+  dealii::ParameterHandler                 prm;
   PhaseField::WillmoreParameters::declare_parameters(prm);
   prm.parse_input_from_string(R"(
 set Dimension = 2
@@ -43,9 +43,9 @@ set Output directory = results
   PhaseField::WillmoreProblem<2> problem(parameters);
   problem.run();
   std::vector<std::string> header;
-  const auto rows = Testing::read_csv("results/statistics.csv", header);
+  const auto   rows = Testing::read_csv("results/statistics.csv", header);
   const double pi = M_PI, r = 0.25;
-  const auto & row = rows[0];
+  const auto  &row = rows[0];
   const double w   = row[Testing::column(header, "willmore_energy")];
   const double a   = row[Testing::column(header, "area_energy")];
   const double m   = row[Testing::column(header, "inside_measure")];
@@ -61,8 +61,7 @@ set Output directory = results
                  << std::endl;
 
   // total lumped mass = inside + outside measure = area of [0,1]^2
-  const auto &mass =
-    problem.get_discretization().get_operators().lumped_mass;
+  const auto  &mass  = problem.get_discretization().get_operators().lumped_mass;
   const double total = mass.l1_norm();
   Testing::log() << "total lumped mass - 1 "
                  << (std::abs(total - 1) < 1e-12 ? "< 1e-12" : "TOO LARGE")

@@ -1,6 +1,6 @@
 // The exact Jacobian of the nested scheme (NestedStep::jacobian_vmult)
 // agrees with central finite differences of the residual, and the
-// eliminated Newton solve (NestedStep::solve_newton_system) solves
+// eliminated Newton solve (NestedStep::solve_jacobian) solves
 // J dZ = -R, in 2D and 3D, on an adaptive mesh with hanging nodes; in 2D
 // also with the area term of edge restoration (eta > 0) and U held fixed
 // at the DoFs with x < 0.3 (the 3-field solve, also with a
@@ -23,8 +23,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <map>
-#include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/geometry/shapes.h>
+#include <phasefield/schemes/nested_scheme.h>
 
 using namespace dealii;
 using namespace PhaseField;

@@ -1,11 +1,9 @@
+#include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
-
-#include <phasefield/core/parameters.h>
-
-#include <cmath>
 #include <fstream>
+#include <phasefield/core/parameters.h>
 #include <sstream>
 
 namespace PhaseField
@@ -28,15 +26,15 @@ namespace PhaseField
       {
         std::ostringstream info;
         exc.print_info(info);
-        throw InputError("The parameter <" + parameter_name +
-                         "> has the value <" + expression +
-                         ">, which is not a valid expression in h: " +
-                         info.str());
+        throw InputError(
+          "The parameter <" + parameter_name + "> has the value <" +
+          expression +
+          ">, which is not a valid expression in h: " + info.str());
       }
     if (!std::isfinite(value))
-      throw InputError("The parameter <" + parameter_name + "> = <" +
-                       expression + "> evaluates to a non-finite number at h = " +
-                       std::to_string(h) + ".");
+      throw InputError(
+        "The parameter <" + parameter_name + "> = <" + expression +
+        "> evaluates to a non-finite number at h = " + std::to_string(h) + ".");
     return value;
   }
 
@@ -46,8 +44,7 @@ namespace PhaseField
   parse_double_list(const std::string &text, const std::string &parameter_name)
   {
     std::vector<double> values;
-    for (const std::string &entry :
-         Utilities::split_string_list(text, ','))
+    for (const std::string &entry : Utilities::split_string_list(text, ','))
       {
         std::size_t consumed = 0;
         double      value    = 0;
@@ -175,12 +172,13 @@ namespace PhaseField
                       "Cells closer to the interface than Band width * "
                       "epsilon (measured through the phase field, "
                       "|U| < tanh(Band width)) are on the finest level.");
-    prm.declare_entry("Refinement interval",
-                      "1",
-                      Patterns::Integer(1),
-                      "Adapt the mesh to the moving interface every this "
-                      "many time steps (the band is wide enough for the interface to "
-                      "move a few epsilon in between).");
+    prm.declare_entry(
+      "Refinement interval",
+      "1",
+      Patterns::Integer(1),
+      "Adapt the mesh to the moving interface every this "
+      "many time steps (the band is wide enough for the interface to "
+      "move a few epsilon in between).");
     prm.declare_entry(
       "Stiffness quadrature",
       "Gauss",
@@ -200,15 +198,14 @@ namespace PhaseField
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    finest_level        = prm.get_integer("Finest level");
-    coarsest_level      = prm.get_integer("Coarsest level");
-    adaptive            = prm.get_bool("Adaptive");
-    band_width          = prm.get_double("Band width");
-    refinement_interval = prm.get_integer("Refinement interval");
-    stiffness_quadrature =
-      prm.get("Stiffness quadrature") == "Gauss-Lobatto" ?
-        StiffnessQuadrature::gauss_lobatto :
-        StiffnessQuadrature::gauss;
+    finest_level         = prm.get_integer("Finest level");
+    coarsest_level       = prm.get_integer("Coarsest level");
+    adaptive             = prm.get_bool("Adaptive");
+    band_width           = prm.get_double("Band width");
+    refinement_interval  = prm.get_integer("Refinement interval");
+    stiffness_quadrature = prm.get("Stiffness quadrature") == "Gauss-Lobatto" ?
+                             StiffnessQuadrature::gauss_lobatto :
+                             StiffnessQuadrature::gauss;
     prm.leave_subsection();
     if (finest_level < coarsest_level)
       throw InputError("<Mesh / Finest level> (" +
@@ -278,7 +275,7 @@ namespace PhaseField
     prm.leave_subsection();
     prm.enter_subsection("Time stepping");
     scheme = prm.get("Scheme") == "semi-implicit" ? Scheme::semi_implicit :
-                                                     Scheme::nested;
+                                                    Scheme::nested;
     tau_expression       = prm.get("Tau");
     inner_tau_expression = prm.get("Inner tau");
     n_steps              = prm.get_integer("Number of steps");
@@ -294,7 +291,7 @@ namespace PhaseField
     epsilon =
       evaluate_expression_in_h(epsilon_expression, h, "Phase field / Epsilon");
     tau = evaluate_expression_in_h(tau_expression, h, "Time stepping / Tau");
-    inner_tau = evaluate_expression_in_h(inner_tau_expression,
+    inner_tau                 = evaluate_expression_in_h(inner_tau_expression,
                                          h,
                                          "Time stepping / Inner tau");
     const auto check_positive = [](const double       value,
@@ -307,7 +304,9 @@ namespace PhaseField
     };
     check_positive(epsilon, "Phase field / Epsilon", epsilon_expression);
     check_positive(tau, "Time stepping / Tau", tau_expression);
-    check_positive(inner_tau, "Time stepping / Inner tau", inner_tau_expression);
+    check_positive(inner_tau,
+                   "Time stepping / Inner tau",
+                   inner_tau_expression);
   }
 
 
@@ -491,15 +490,15 @@ namespace PhaseField
       {
         std::ostringstream info;
         exc.print_info(info);
-        throw InputError("Error in the parameter file <" + filename +
-                         ">:\n" + info.str());
+        throw InputError("Error in the parameter file <" + filename + ">:\n" +
+                         info.str());
       }
   }
 
 
 
   void
-  declare_common_parameters(ParameterHandler &prm,
+  declare_common_parameters(ParameterHandler  &prm,
                             const std::string &output_description)
   {
     prm.declare_entry("Dimension",

@@ -1,9 +1,7 @@
 #include <deal.II/base/mpi.h>
-
+#include <iostream>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/program.h>
-
-#include <iostream>
 #include <sstream>
 
 namespace PhaseField
@@ -11,9 +9,9 @@ namespace PhaseField
   using namespace dealii;
 
   int
-  run_program(int                                             argc,
-              char **                                         argv,
-              const std::string &                             program_name,
+  run_program(int                                            argc,
+              char                                         **argv,
+              const std::string                             &program_name,
               const std::function<void(ParameterHandler &)> &declare,
               const std::function<void(ParameterHandler &)> &run)
   {
@@ -54,8 +52,8 @@ namespace PhaseField
     catch (const InputError &error)
       {
         if (root)
-          std::cerr << "\n" << program_name << ": input error: " << error.what()
-                    << "\n"
+          std::cerr << "\n"
+                    << program_name << ": input error: " << error.what() << "\n"
                     << std::endl;
         return 2;
       }
@@ -65,8 +63,8 @@ namespace PhaseField
           {
             std::ostringstream info;
             exc.print_info(info);
-            std::cerr << "\n" << program_name << ": error: " << info.str()
-                      << std::endl;
+            std::cerr << "\n"
+                      << program_name << ": error: " << info.str() << std::endl;
           }
         return 1;
       }

@@ -1,15 +1,13 @@
-#include <deal.II/base/exceptions.h>
-
-#include <phasefield/core/statistics.h>
-
 #include <cmath>
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <iomanip>
+#include <phasefield/core/statistics.h>
 
 namespace PhaseField
 {
-  StatisticsFile::StatisticsFile(const std::string &             filename,
+  StatisticsFile::StatisticsFile(const std::string              &filename,
                                  const std::vector<std::string> &columns,
                                  const MPI_Comm mpi_communicator)
     : n_columns(columns.size())

@@ -232,13 +232,14 @@ namespace PhaseField
           const std::vector<double> upper_rotated = {center[0] + sizes[1] / 2,
                                                      center[1] + sizes[0] / 2};
           const bool                is_cross      = (shape == "cross");
-          intact = std::make_shared<Shapes::FunctionFromCallable<2>>([=](const Point<2> &p) {
-            const double bar = box_distance(p, lower, upper);
-            return is_cross ?
-                     std::min(bar,
-                              box_distance(p, lower_rotated, upper_rotated)) :
-                     bar;
-          });
+          intact = std::make_shared<Shapes::FunctionFromCallable<2>>(
+            [=](const Point<2> &p) {
+              const double bar = box_distance(p, lower, upper);
+              return is_cross ?
+                       std::min(bar,
+                                box_distance(p, lower_rotated, upper_rotated)) :
+                       bar;
+            });
         }
       else if (shape == "image")
         intact = std::make_shared<ImageDistance>(image_file, threshold);

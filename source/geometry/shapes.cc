@@ -1,10 +1,8 @@
-#include <deal.II/base/function_parser.h>
-
-#include <phasefield/geometry/shapes.h>
-
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/function_parser.h>
 #include <functional>
+#include <phasefield/geometry/shapes.h>
 #include <sstream>
 
 namespace PhaseField
@@ -19,7 +17,7 @@ namespace PhaseField
       Point<dim>
       to_point(const std::vector<double> &values,
                const double               default_value,
-               const std::string &        parameter_name)
+               const std::string         &parameter_name)
       {
         Point<dim> p;
         if (values.empty())
@@ -40,7 +38,7 @@ namespace PhaseField
       std::vector<double>
       expand_sizes(const std::vector<double> &sizes,
                    const unsigned int         n,
-                   const std::string &        shape)
+                   const std::string         &shape)
       {
         if (sizes.size() == 1)
           return std::vector<double>(n, sizes[0]);
@@ -50,6 +48,113 @@ namespace PhaseField
         return std::vector<double>(sizes.begin(), sizes.begin() + n);
       }
 
+
+
+      /** Cylinder with axis x_d, Sizes = diameter, thickness. */
+      template <int dim>
+      std::unique_ptr<Function<dim>>
+      disc_distance(const Point<dim> &center, const std::vector<double> &sizes)
+      {
+        const std::string shape = "disc";
+        // cylinder with axis x_d: radius = diameter/2, half thickness
+        const std::vector<double> s = expand_sizes(sizes, 2, shape);
+        const double radius = 0.5 * s[0], half_thickness = 0.5 * s[1];
+        return std::make_unique<FunctionFromCallable<dim>>(
+          [center, radius, half_thickness](const Point<dim> &p) {
+            const Tensor<1, dim> x    = p - center;
+            double               rho2 = 0;
+            for (unsigned int d = 0; d + 1 < dim; ++d)
+              rho2 += x[d] * x[d];
+            Tensor<1, 2> q;
+            q[0] = std::sqrt(rho2);
+            q[1] = x[dim - 1];
+            return box_distance<2>(q, {radius, half_thickness});
+          });
+      }
+
+
+
+      /** Ellipsoid with semi-axes Sizes. */
+      template <int dim>
+      std::unique_ptr<Function<dim>>
+      ellipsoid_distance(const Point<dim>          &center,
+                         const std::vector<double> &sizes)
+      {
+        const std::string shape = "ellipsoid";
+        // Quilez's first-order signed distance to an ellipsoid, exact on
+        // the surface and along the axes.
+        const std::vector<double> a = expand_sizes(sizes, dim, shape);
+        return std::make_unique<FunctionFromCallable<dim>>(
+          [center, a](const Point<dim> &p) {
+            const Tensor<1, dim> x  = p - center;
+            double               k0 = 0, k1 = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                k0 += std::pow(x[d] / a[d], 2);
+                k1 += std::pow(x[d] / (a[d] * a[d]), 2);
+              }
+            k0 = std::sqrt(k0);
+            k1 = std::sqrt(k1);
+            if (k1 == 0)
+              return -*std::min_element(a.begin(), a.end());
+            return k0 * (k0 - 1.) / k1;
+          });
+      }
+
+
+
+      /** Torus (axis x_d; an annulus in 2D), Sizes = R, r. */
+      template <int dim>
+      std::unique_ptr<Function<dim>>
+      torus_distance(const Point<dim> &center, const std::vector<double> &sizes)
+      {
+        const std::string         shape = "torus";
+        const std::vector<double> s     = expand_sizes(sizes, 2, shape);
+        if (s.size() < 2 || sizes.size() < 2)
+          throw InputError("Shape <torus> needs <Geometry / Sizes> = R, r.");
+        const double R = s[0], rr = s[1];
+        return std::make_unique<FunctionFromCallable<dim>>(
+          [center, R, rr](const Point<dim> &p) {
+            const Tensor<1, dim> x    = p - center;
+            double               rho2 = 0;
+            for (unsigned int d = 0; d + 1 < dim; ++d)
+              rho2 += x[d] * x[d];
+            if (dim == 2)
+              return std::abs(std::sqrt(rho2 + x[1] * x[1]) - R) - rr;
+            return std::sqrt(std::pow(std::sqrt(rho2) - R, 2) +
+                             x[dim - 1] * x[dim - 1]) -
+                   rr;
+          });
+      }
+
+
+
+      /** Signed distance as a muParser expression in x, y (, z). */
+      template <int dim>
+      std::unique_ptr<Function<dim>>
+      parsed_distance(const std::string &expression)
+      {
+        auto parser = std::make_unique<FunctionParser<dim>>();
+        try
+          {
+            parser->initialize(FunctionParser<dim>::default_variable_names(),
+                               expression,
+                               {});
+            // muParser parses lazily: evaluate once to catch errors here
+            const double v = parser->value(Point<dim>());
+            (void)v;
+          }
+        catch (const ExceptionBase &exc)
+          {
+            std::ostringstream info;
+            exc.print_info(info);
+            throw InputError("The parameter <Geometry / Expression> = <" +
+                             expression + "> is not a valid expression in " +
+                             FunctionParser<dim>::default_variable_names() +
+                             ": " + info.str());
+          }
+        return parser;
+      }
     } // namespace
 
 
@@ -124,89 +229,16 @@ namespace PhaseField
         }
 
       if (shape == "disc")
-        {
-          // cylinder with axis x_d: radius = diameter/2, half thickness
-          const std::vector<double> s = expand_sizes(geometry.sizes, 2, shape);
-          const double radius = 0.5 * s[0], half_thickness = 0.5 * s[1];
-          return std::make_unique<FunctionFromCallable<dim>>(
-            [center, radius, half_thickness](const Point<dim> &p) {
-              const Tensor<1, dim> x = p - center;
-              double               rho2 = 0;
-              for (unsigned int d = 0; d + 1 < dim; ++d)
-                rho2 += x[d] * x[d];
-              Tensor<1, 2> q;
-              q[0] = std::sqrt(rho2);
-              q[1] = x[dim - 1];
-              return box_distance<2>(q, {radius, half_thickness});
-            });
-        }
+        return disc_distance<dim>(center, geometry.sizes);
 
       if (shape == "ellipsoid")
-        {
-          // Quilez's first-order signed distance to an ellipsoid, exact on
-          // the surface and along the axes.
-          const std::vector<double> a = expand_sizes(geometry.sizes, dim, shape);
-          return std::make_unique<FunctionFromCallable<dim>>(
-            [center, a](const Point<dim> &p) {
-              const Tensor<1, dim> x = p - center;
-              double               k0 = 0, k1 = 0;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  k0 += std::pow(x[d] / a[d], 2);
-                  k1 += std::pow(x[d] / (a[d] * a[d]), 2);
-                }
-              k0 = std::sqrt(k0);
-              k1 = std::sqrt(k1);
-              if (k1 == 0)
-                return -*std::min_element(a.begin(), a.end());
-              return k0 * (k0 - 1.) / k1;
-            });
-        }
+        return ellipsoid_distance<dim>(center, geometry.sizes);
 
       if (shape == "torus")
-        {
-          const std::vector<double> s = expand_sizes(geometry.sizes, 2, shape);
-          if (s.size() < 2 || geometry.sizes.size() < 2)
-            throw InputError("Shape <torus> needs <Geometry / Sizes> = R, r.");
-          const double R = s[0], rr = s[1];
-          return std::make_unique<FunctionFromCallable<dim>>(
-            [center, R, rr](const Point<dim> &p) {
-              const Tensor<1, dim> x = p - center;
-              double               rho2 = 0;
-              for (unsigned int d = 0; d + 1 < dim; ++d)
-                rho2 += x[d] * x[d];
-              if (dim == 2)
-                return std::abs(std::sqrt(rho2 + x[1] * x[1]) - R) - rr;
-              return std::sqrt(std::pow(std::sqrt(rho2) - R, 2) +
-                               x[dim - 1] * x[dim - 1]) -
-                     rr;
-            });
-        }
+        return torus_distance<dim>(center, geometry.sizes);
 
       if (shape == "function")
-        {
-          auto parser = std::make_unique<FunctionParser<dim>>();
-          try
-            {
-              parser->initialize(FunctionParser<dim>::default_variable_names(),
-                                 geometry.expression,
-                                 {});
-              // muParser parses lazily: evaluate once to catch errors here
-              const double v = parser->value(Point<dim>());
-              (void)v;
-            }
-          catch (const ExceptionBase &exc)
-            {
-              std::ostringstream info;
-              exc.print_info(info);
-              throw InputError("The parameter <Geometry / Expression> = <" +
-                               geometry.expression +
-                               "> is not a valid expression in " +
-                               FunctionParser<dim>::default_variable_names() +
-                               ": " + info.str());
-            }
-          return parser;
-        }
+        return parsed_distance<dim>(geometry.expression);
 
       throw InputError("Unknown <Geometry / Shape> = <" + shape + ">.");
     }

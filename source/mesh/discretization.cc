@@ -211,9 +211,9 @@ namespace PhaseField
 
   template <int dim>
   double
-  Discretization<dim>::error(const Vector                &u,
-                             const Function<dim>         &exact,
-                             const VectorTools::NormType  norm) const
+  Discretization<dim>::error(const Vector               &u,
+                             const Function<dim>        &exact,
+                             const VectorTools::NormType norm) const
   {
     Vector ghosted(operators.locally_owned_dofs,
                    operators.locally_relevant_dofs,

@@ -1,6 +1,6 @@
 #include <cmath>
-#include <phasefield/problems/biharmonic_parameters.h>
 #include <phasefield/core/parameters.h>
+#include <phasefield/problems/biharmonic_parameters.h>
 
 namespace PhaseField
 {

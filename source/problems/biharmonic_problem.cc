@@ -7,9 +7,9 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <filesystem>
 #include <iomanip>
+#include <phasefield/core/statistics.h>
 #include <phasefield/problems/biharmonic_problem.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
-#include <phasefield/core/statistics.h>
 
 namespace PhaseField
 {
@@ -252,7 +252,7 @@ namespace PhaseField
     {
       typename Discretization<dim>::Settings settings{};
       settings.mesh.finest_level = settings.mesh.coarsest_level = level;
-      settings.mesh.adaptive             = false;
+      settings.mesh.adaptive                                    = false;
       settings.mesh.stiffness_quadrature = StiffnessQuadrature::gauss;
       settings.boundary_conditions =
         bc == BiharmonicBoundaryConditions::dirichlet ?
@@ -265,24 +265,24 @@ namespace PhaseField
 
     /** The nested scheme of the biharmonic model with forcing @p f. */
     SchemeSettings
-    biharmonic_scheme(const double                          inner_tau,
+    biharmonic_scheme(const double                         inner_tau,
                       const TrilinosWrappers::MPI::Vector *f)
     {
       SchemeSettings s;
-      s.scheme                            = Scheme::nested;
-      s.epsilon                           = 1;
-      s.inner_tau                         = inner_tau;
-      s.double_well                       = false;
-      s.outer_energy.forcing              = f;
-      s.newton.relative_tolerance         = newton_relative_tolerance;
-      s.newton.absolute_tolerance         = 0;
-      s.newton.max_iterations             = newton_max_iterations;
-      s.newton.max_damping_steps          = 0;
-      s.newton.watchdog_factor            = 1;
-      s.newton.max_step_halvings          = 0;
-      s.linear_solver.type                = LinearSolverType::direct;
-      s.linear_solver.relative_tolerance  = linear_solver_tolerance;
-      s.linear_solver.max_iterations      = linear_solver_max_iterations;
+      s.scheme                           = Scheme::nested;
+      s.epsilon                          = 1;
+      s.inner_tau                        = inner_tau;
+      s.double_well                      = false;
+      s.outer_energy.forcing             = f;
+      s.newton.relative_tolerance        = newton_relative_tolerance;
+      s.newton.absolute_tolerance        = 0;
+      s.newton.max_iterations            = newton_max_iterations;
+      s.newton.max_damping_steps         = 0;
+      s.newton.watchdog_factor           = 1;
+      s.newton.max_step_halvings         = 0;
+      s.linear_solver.type               = LinearSolverType::direct;
+      s.linear_solver.relative_tolerance = linear_solver_tolerance;
+      s.linear_solver.max_iterations     = linear_solver_max_iterations;
       return s;
     }
   } // namespace
@@ -303,9 +303,9 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , discretization(
-        uniform_mesh<dim>(level, parameters.problem.boundary_conditions),
-        mpi_communicator)
+    , discretization(uniform_mesh<dim>(level,
+                                       parameters.problem.boundary_conditions),
+                     mpi_communicator)
     , exact(BiharmonicSolutions::exact_solution<dim>(
         parameters.problem.boundary_conditions))
     , exact_solution(exact.function())
@@ -320,7 +320,7 @@ namespace PhaseField
     TimerOutput::Scope t(computing_timer, "setup");
     discretization.create_mesh(nullptr, 1.);
     const LumpedOperators<dim> &operators = discretization.get_operators();
-    scheme = create_time_stepping_scheme<dim>(
+    scheme                                = create_time_stepping_scheme<dim>(
       biharmonic_scheme(step_sizes.inner_tau,
                         exact.forced ? &forcing_vector : nullptr),
       discretization,
@@ -405,13 +405,13 @@ namespace PhaseField
       }
 
     BiharmonicLevelResult result;
-    result.level             = level;
-    result.h                 = h;
-    result.tau               = step_sizes.tau;
-    result.inner_tau         = step_sizes.inner_tau;
-    result.n_steps           = step_sizes.n_steps;
-    result.time              = time;
-    result.n_dofs            = discretization.n_dofs();
+    result.level     = level;
+    result.h         = h;
+    result.tau       = step_sizes.tau;
+    result.inner_tau = step_sizes.inner_tau;
+    result.n_steps   = step_sizes.n_steps;
+    result.time      = time;
+    result.n_dofs    = discretization.n_dofs();
     result.relative_residual =
       report.final_residual_norm / report.initial_residual_norm;
     result.n_factorizations = scheme->n_factorizations();

@@ -23,12 +23,12 @@ namespace PhaseField
     {
       const RestorationParameters &restoration = parameters.restoration;
       PhaseFieldProblem<2>::Setup  setup;
-      setup.program_name    = "edge_restoration";
-      setup.signed_distance = Images::create_damaged_image(
-        parameters.willmore.geometry,
-        restoration.image_file,
-        restoration.threshold,
-        restoration.damage);
+      setup.program_name = "edge_restoration";
+      setup.signed_distance =
+        Images::create_damaged_image(parameters.willmore.geometry,
+                                     restoration.image_file,
+                                     restoration.threshold,
+                                     restoration.damage);
       setup.outer_energy.area_weight = restoration.eta;
       setup.outer_energy.fixed_u     = &fixed_u_dofs;
       // a stationary restored edge must not make the mesh alternate
@@ -75,8 +75,8 @@ namespace PhaseField
   void
   RestorationProblem::setup_fixed_u()
   {
-    const DoFHandler<2>        &dof_handler = discretization.get_dof_handler();
-    const LumpedOperators<2>   &operators   = discretization.get_operators();
+    const DoFHandler<2>      &dof_handler = discretization.get_dof_handler();
+    const LumpedOperators<2> &operators   = discretization.get_operators();
     fixed_u_dofs.clear();
     fixed_u_dofs.set_size(dof_handler.n_dofs());
     initial_u.reinit(operators.locally_owned_dofs, mpi_communicator);
@@ -99,9 +99,9 @@ namespace PhaseField
   void
   RestorationProblem::reset_fixed_u(BlockVector &state) const
   {
-    Vector            &u     = state.block(0);
-    const IndexSet    &owned = discretization.get_operators().locally_owned_dofs;
-    const unsigned int n     = u.locally_owned_size();
+    Vector         &u     = state.block(0);
+    const IndexSet &owned = discretization.get_operators().locally_owned_dofs;
+    const unsigned int n  = u.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       if (fixed_u_dofs.is_element(owned.nth_index_in_set(i)))
         u.begin()[i] = initial_u.begin()[i];
@@ -112,9 +112,9 @@ namespace PhaseField
   double
   RestorationProblem::fixed_u_deviation(const BlockVector &state) const
   {
-    const Vector      &u     = state.block(0);
-    const IndexSet    &owned = discretization.get_operators().locally_owned_dofs;
-    const unsigned int n     = u.locally_owned_size();
+    const Vector   &u     = state.block(0);
+    const IndexSet &owned = discretization.get_operators().locally_owned_dofs;
+    const unsigned int n  = u.locally_owned_size();
     double             deviation = 0;
     for (unsigned int i = 0; i < n; ++i)
       if (fixed_u_dofs.is_element(owned.nth_index_in_set(i)))

@@ -12,9 +12,9 @@ namespace PhaseField
     willmore_setup(const WillmoreParameters &parameters)
     {
       typename PhaseFieldProblem<dim>::Setup setup;
-      setup.program_name    = "willmore_flow";
-      setup.signed_distance = Shapes::create_signed_distance<dim>(
-        parameters.geometry);
+      setup.program_name = "willmore_flow";
+      setup.signed_distance =
+        Shapes::create_signed_distance<dim>(parameters.geometry);
       return setup;
     }
   } // namespace

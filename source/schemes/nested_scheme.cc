@@ -13,7 +13,7 @@ namespace PhaseField
   using namespace dealii;
 
   // ---------------------------------------------------------------------
-  // The inner problem (3.19): R_P(U, V) = 0 for V at fixed U
+  // The inner problem (3.18b): R_P(U, V) = 0 for V at fixed U
   // ---------------------------------------------------------------------
 
   /**
@@ -78,7 +78,7 @@ namespace PhaseField
 
 
   // ---------------------------------------------------------------------
-  // One step: residual and Jacobian of the saddle-point system (3.17)
+  // One step: residual and Jacobian of the saddle point of (3.19)
   // ---------------------------------------------------------------------
 
   template <int dim>
@@ -91,10 +91,10 @@ namespace PhaseField
     , coeff(coefficients)
     , weights(coefficients)
     , old_u(old_u)
-    , constant_matrices(
-        coefficients.double_well || coefficients.outer.has_restoration_terms() ?
-          nullptr :
-          constant_matrices)
+    , constant_matrices(coefficients.double_well ||
+                            coefficients.outer.has_restoration_terms() ?
+                          nullptr :
+                          constant_matrices)
   {}
 
 
@@ -122,8 +122,9 @@ namespace PhaseField
     const unsigned int n  = u.locally_owned_size();
     const double      *m  = ops.lumped_mass.begin();
     const double      *uk = old_u.begin();
-    const double *f = coeff.outer.forcing ? coeff.outer.forcing->begin() : nullptr;
-    const double  forcing_factor = coeff.tau / coeff.epsilon;
+    const double      *f =
+      coeff.outer.forcing ? coeff.outer.forcing->begin() : nullptr;
+    const double forcing_factor = coeff.tau / coeff.epsilon;
     for (unsigned int i = 0; i < n; ++i)
       {
         const double ui = u.begin()[i], vi = v.begin()[i], pi = p.begin()[i];
@@ -269,9 +270,7 @@ namespace PhaseField
                            const double                    shift,
                            TrilinosWrappers::SparseMatrix &k) const
   {
-    ops.stiffness_plus_weighted_mass(weights.inner_tau,
-                                     k_weights(v, shift),
-                                     k);
+    ops.stiffness_plus_weighted_mass(weights.inner_tau, k_weights(v, shift), k);
   }
 
 
@@ -324,8 +323,7 @@ namespace PhaseField
     const double      *m = ops.lumped_mass.begin();
     const unsigned int n = v.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
-      diagonal.begin()[i] =
-        m[i] * (b + weights.e(v.begin()[i], p.begin()[i]));
+      diagonal.begin()[i] = m[i] * (b + weights.e(v.begin()[i], p.begin()[i]));
 
     if (type == LinearSolverType::direct)
       {
@@ -420,14 +418,13 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedStep<dim>::reinit_full_jacobian(
-    TrilinosWrappers::SparseMatrix &j) const
+  NestedStep<dim>::reinit_full_jacobian(TrilinosWrappers::SparseMatrix &j) const
   {
     const auto                   &L      = ops.stiffness;
     const IndexSet               &owned  = ops.locally_owned_dofs;
     const unsigned int            n      = owned.n_elements();
     const types::global_dof_index n_dofs = owned.size();
-    const auto index = [](const types::global_dof_index g,
+    const auto                    index  = [](const types::global_dof_index g,
                           const unsigned int field) { return 3 * g + field; };
 
     IndexSet owned3(3 * n_dofs);
@@ -473,9 +470,9 @@ namespace PhaseField
     const IndexSet    &owned       = ops.locally_owned_dofs;
     const unsigned int n           = owned.n_elements();
     const double      *m           = ops.lumped_mass.begin();
-    const double                 *u      = z.block(Field::U).begin();
-    const double                 *v      = z.block(Field::V).begin();
-    const double                 *p      = z.block(Field::P).begin();
+    const double      *u           = z.block(Field::U).begin();
+    const double      *v           = z.block(Field::V).begin();
+    const double      *p           = z.block(Field::P).begin();
 
     // U rows and columns replaced by the identity: fixed and constrained
     std::vector<bool> identity_row(n, false);
@@ -627,10 +624,8 @@ namespace PhaseField
     z.block(Field::V) = z.block(Field::U);
     Vector r(z.block(Field::U));
     inner_residual(z.block(Field::U), z.block(Field::V), r);
-    return solve_inner_problem(z,
-                               solver,
-                               std::max(tolerance * ops.dual_norm(r),
-                                        Constants::roundoff));
+    return solve_inner_problem(
+      z, solver, std::max(tolerance * ops.dual_norm(r), Constants::roundoff));
   }
 
 
@@ -653,13 +648,9 @@ namespace PhaseField
     const MPI_Comm comm            = discretization.get_mpi_communicator();
     BlockVector    v(std::vector<IndexSet>(1, ops.locally_owned_dofs), comm);
     v.block(0) = z.block(Field::V);
-    InnerProblem       inner(*this, z.block(Field::U));
-    const StepReport   report = newton_solve(inner,
-                                           v,
-                                           control,
-                                           solver,
-                                           ConditionalOStream(std::cout, false),
-                                           false);
+    InnerProblem     inner(*this, z.block(Field::U));
+    const StepReport report = newton_solve(
+      inner, v, control, solver, ConditionalOStream(std::cout, false), false);
     AssertThrow(report.converged,
                 ExcMessage("The inner problem (V for given U, Algorithm "
                            "3.1) did not converge in 50 Newton "
@@ -667,12 +658,12 @@ namespace PhaseField
     z.block(Field::V) = v.block(0);
 
     // P: K(V) P = -a M (V - U)
-    const Vector      &u = z.block(Field::U);
-    const Vector      &w = z.block(Field::V);
-    Vector            &p = z.block(Field::P);
-    const double      *m = ops.lumped_mass.begin();
-    const unsigned int n = u.locally_owned_size();
-    Vector             r(u);
+    const Vector                  &u = z.block(Field::U);
+    const Vector                  &w = z.block(Field::V);
+    Vector                        &p = z.block(Field::P);
+    const double                  *m = ops.lumped_mass.begin();
+    const unsigned int             n = u.locally_owned_size();
+    Vector                         r(u);
     TrilinosWrappers::SparseMatrix k;
     build_k(w, 0., k);
     for (unsigned int i = 0; i < n; ++i)
@@ -698,8 +689,8 @@ namespace PhaseField
     energy += 0.5 * weights.a * ops.mass_product(difference, difference);
     if (coeff.outer.area_weight != 0)
       // 2 tau eta a_eps[U] / (2 eps)
-      energy += weights.area_factor *
-                area_functional(ops, u, coeff.epsilon) / coeff.epsilon;
+      energy += weights.area_factor * area_functional(ops, u, coeff.epsilon) /
+                coeff.epsilon;
     if (coeff.outer.forcing != nullptr)
       // -2 tau F.U / (2 eps)
       energy -= coeff.tau / coeff.epsilon * (*coeff.outer.forcing * u);
@@ -727,11 +718,10 @@ namespace PhaseField
 
 
 
-
   template <int dim>
-  NestedScheme<dim>::NestedScheme(const SchemeSettings       &settings,
-                                  const Discretization<dim>  &discretization,
-                                  const ConditionalOStream   &pcout)
+  NestedScheme<dim>::NestedScheme(const SchemeSettings      &settings,
+                                  const Discretization<dim> &discretization,
+                                  const ConditionalOStream  &pcout)
     : settings(settings)
     , discretization(discretization)
     , pcout(pcout)
@@ -743,8 +733,7 @@ namespace PhaseField
         std::make_unique<typename NestedStep<dim>::ReducedMatrices>())
   {
     // the biharmonic model: the same matrix in every step on a mesh
-    if (!settings.double_well &&
-        !settings.outer_energy.has_restoration_terms())
+    if (!settings.double_well && !settings.outer_energy.has_restoration_terms())
       linear_solver->set_constant_matrix(true);
   }
 
@@ -945,8 +934,7 @@ namespace PhaseField
     Vector difference(state.block(Field::U));
     difference -= old_state.block(Field::U);
     return Constants::geometric_unit * settings.epsilon / (2 * tau) *
-           discretization.get_operators().mass_product(difference,
-                                                       difference);
+           discretization.get_operators().mass_product(difference, difference);
   }
 
 

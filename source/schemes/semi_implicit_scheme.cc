@@ -27,8 +27,8 @@ namespace PhaseField
   template <int dim>
   void
   SemiImplicitStep<dim>::nonlinear_coefficients(const BlockVector &z,
-                                                  Vector            &G,
-                                                  Vector            &g) const
+                                                Vector            &G,
+                                                Vector            &g) const
   {
     G = z.block(F::F);
     G += old_state.block(F::F);
@@ -166,8 +166,8 @@ namespace PhaseField
   template <int dim>
   void
   SemiImplicitStep<dim>::jacobian_vmult(const BlockVector &z,
-                                          const BlockVector &x,
-                                          BlockVector       &y) const
+                                        const BlockVector &x,
+                                        BlockVector       &y) const
   {
     Vector G, g;
     nonlinear_coefficients(z, G, g);
@@ -233,9 +233,9 @@ namespace PhaseField
 
   template <int dim>
   SemiImplicitScheme<dim>::SemiImplicitScheme(
-    const SchemeSettings       &settings,
-    const Discretization<dim>  &discretization,
-    const ConditionalOStream   &pcout)
+    const SchemeSettings      &settings,
+    const Discretization<dim> &discretization,
+    const ConditionalOStream  &pcout)
     : settings(settings)
     , discretization(discretization)
     , pcout(pcout)
@@ -243,9 +243,9 @@ namespace PhaseField
     // the Jacobian is not symmetric
     linear_solver = std::make_unique<LinearSolver>(
       LinearSolver::resolve_type(settings.linear_solver.type, dim),
-                                     settings.linear_solver.relative_tolerance,
-                                     settings.linear_solver.max_iterations,
-                                     /*symmetric=*/false);
+      settings.linear_solver.relative_tolerance,
+      settings.linear_solver.max_iterations,
+      /*symmetric=*/false);
   }
 
 

@@ -18,8 +18,7 @@ namespace PhaseField
                                                      pcout);
         case Scheme::semi_implicit:
           if (settings.outer_energy.has_restoration_terms() ||
-              settings.outer_energy.forcing != nullptr ||
-              !settings.double_well)
+              settings.outer_energy.forcing != nullptr || !settings.double_well)
             throw InputError(
               "<Time stepping / Scheme> = semi-implicit has no area term, "
               "fixed values or forcing: use Scheme = nested.");

@@ -195,16 +195,15 @@ namespace PhaseField
     StepReport
     DescentNewton::run()
     {
-      merit = problem.project_and_energy(z);
-      const double target =
-        internal::start_newton(
-          problem, z, residual, control, pcout, verbose, norm, report);
+      merit               = problem.project_and_energy(z);
+      const double target = internal::start_newton(
+        problem, z, residual, control, pcout, verbose, norm, report);
       if (report.converged || !std::isfinite(norm) || !std::isfinite(merit))
         return report;
 
       for (unsigned int it = 1; it <= control.max_iterations; ++it)
         {
-          report.newton_iterations = it;
+          report.newton_iterations  = it;
           const Direction direction = find_descent_direction(it);
           if (direction != Direction::descent)
             {
@@ -241,9 +240,9 @@ namespace PhaseField
           norm                       = problem.residual_norm(residual);
           report.final_residual_norm = norm;
           if (verbose)
-            pcout << "    Newton " << it << ": residual " << norm
-                  << ", energy " << std::setprecision(12) << merit
-                  << std::setprecision(6) << std::endl;
+            pcout << "    Newton " << it << ": residual " << norm << ", energy "
+                  << std::setprecision(12) << merit << std::setprecision(6)
+                  << std::endl;
           if (norm <= target)
             {
               report.converged = true;

@@ -34,10 +34,10 @@ namespace PhaseField
     const int symbolic = indefinite_solver->SymbolicFactorization();
     const int numeric  = indefinite_solver->NumericFactorization();
     AssertThrow(symbolic == 0 && numeric == 0,
-                ExcMessage(
-                  "MUMPS could not factorise the Newton matrix "
-                  "(error " +
-                  std::to_string(symbolic != 0 ? symbolic : numeric) + ")."));
+                ExcMessage("MUMPS could not factorise the Newton matrix "
+                           "(error " +
+                           std::to_string(symbolic != 0 ? symbolic : numeric) +
+                           ")."));
   }
 
 

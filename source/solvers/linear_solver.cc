@@ -9,12 +9,11 @@ namespace PhaseField
 {
   using namespace dealii;
 
-  LinearSolver::LinearSolver(
-    const LinearSolverType type,
-    const double           relative_tolerance,
-    const unsigned int     max_iterations,
-    const bool             symmetric,
-    const unsigned int     refactorization_threshold)
+  LinearSolver::LinearSolver(const LinearSolverType type,
+                             const double           relative_tolerance,
+                             const unsigned int     max_iterations,
+                             const bool             symmetric,
+                             const unsigned int     refactorization_threshold)
     : solver_type(type)
     , relative_tolerance(relative_tolerance)
     , max_iterations(max_iterations)
@@ -62,8 +61,8 @@ namespace PhaseField
 
   unsigned int
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
-                             TrilinosWrappers::MPI::Vector        &solution,
-                             const TrilinosWrappers::MPI::Vector  &rhs)
+                      TrilinosWrappers::MPI::Vector        &solution,
+                      const TrilinosWrappers::MPI::Vector  &rhs)
   {
     SolverControl control(max_iterations,
                           tolerance * rhs.l2_norm(),
@@ -81,7 +80,8 @@ namespace PhaseField
       {
         const auto refactorize = [&]() {
           factorization =
-            std::make_unique<DirectFactorization>(matrix, pivoting_workspace_percent);
+            std::make_unique<DirectFactorization>(matrix,
+                                                  pivoting_workspace_percent);
           ++factorization_count;
         };
         bool fresh = false;

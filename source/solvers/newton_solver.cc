@@ -63,7 +63,6 @@ namespace PhaseField
 
 
 
-
   StepReport
   newton_solve(NonlinearSystem                    &system,
                TrilinosWrappers::MPI::BlockVector &z,
@@ -82,10 +81,9 @@ namespace PhaseField
     constexpr double linear_safety_factor   = 0.05;
 
     StepReport   report;
-    double       norm = 0;
-    const double target =
-      internal::start_newton(
-        system, z, residual, control, pcout, verbose, norm, report);
+    double       norm   = 0;
+    const double target = internal::start_newton(
+      system, z, residual, control, pcout, verbose, norm, report);
     if (report.converged || !std::isfinite(norm))
       return report;
 
@@ -107,7 +105,7 @@ namespace PhaseField
         report.linear_iterations += linear_iterations;
         report.newton_iterations = it;
 
-        const Backtracking step = backtrack(system,
+        const Backtracking step       = backtrack(system,
                                             z,
                                             update,
                                             trial,

@@ -30,8 +30,8 @@ namespace PhaseField
                 std::string(" (retrying with smaller time steps is "
                             "switched off: Newton / Maximum step "
                             "halvings = 0)") :
-                " even after halving the time step " +
-                  std::to_string(attempt) + " times") +
+                " even after halving the time step " + std::to_string(attempt) +
+                  " times") +
              " (tau = " + std::to_string(tau) +
              "). Try a smaller <Time stepping / Tau> or a larger "
              "<Newton / Maximum iterations>. The statistics and output "
@@ -102,11 +102,10 @@ namespace PhaseField
 
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        old_state                  = state;
-        double       tau           = settings.model.step_size(step);
-        const double energy_before = scheme.has_energy_law() ?
-                                       scheme.energy_law_energy(state) :
-                                       0.;
+        old_state        = state;
+        double       tau = settings.model.step_size(step);
+        const double energy_before =
+          scheme.has_energy_law() ? scheme.energy_law_energy(state) : 0.;
         const StepReport report = advance_with_halving(step, state, tau);
         if (scheme.has_energy_law())
           check_energy_law(step, state, energy_before, tau);
@@ -181,7 +180,7 @@ namespace PhaseField
   TimeLoop<dim>::remesh(BlockVector &state)
   {
     TimerOutput::Scope t(timer, "mesh: adapt");
-    const bool         report_energy = settings.verbose && scheme.has_energy_law();
+    const bool   report_energy = settings.verbose && scheme.has_energy_law();
     const double before = report_energy ? scheme.energy_law_energy(state) : 0.;
     if (!discretization.adapt_to_phase_field(state))
       return;
@@ -213,27 +212,25 @@ namespace PhaseField
     const double   dofs  = double(scheme.n_fields()) * discretization.n_dofs();
     const double   cells =
       discretization.get_triangulation().n_global_active_cells();
-    statistics->add_row(
-      concatenate<double>({double(step),
-                           time,
-                           double(report.newton_iterations),
-                           double(report.linear_iterations),
-                           cells,
-                           dofs,
-                           e.willmore,
-                           e.area,
-                           e.inside_measure,
-                           error,
-                           wall_timer.wall_time(),
-                           tau,
-                           report.final_residual_norm},
-                          client.extra_values(state, e)));
+    statistics->add_row(concatenate<double>({double(step),
+                                             time,
+                                             double(report.newton_iterations),
+                                             double(report.linear_iterations),
+                                             cells,
+                                             dofs,
+                                             e.willmore,
+                                             e.area,
+                                             e.inside_measure,
+                                             error,
+                                             wall_timer.wall_time(),
+                                             tau,
+                                             report.final_residual_norm},
+                                            client.extra_values(state, e)));
     pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
           << std::setprecision(5) << time << "  newton "
-          << report.newton_iterations << " (linear "
-          << report.linear_iterations << ")  W = " << std::setprecision(7)
-          << e.willmore << "  A = " << e.area
-          << "  inside = " << e.inside_measure;
+          << report.newton_iterations << " (linear " << report.linear_iterations
+          << ")  W = " << std::setprecision(7) << e.willmore
+          << "  A = " << e.area << "  inside = " << e.inside_measure;
     if (!std::isnan(error))
       pcout << "  L2 error = " << std::setprecision(4) << error;
     pcout << "  cells " << cells << "  [" << std::setprecision(3)

@@ -257,7 +257,8 @@ namespace PhaseField
                       const std::string        &filename);
 
   /**
-   * Declare the top-level entries that every program has: `Dimension` (2 or 3) and `Output directory`, documented by
+   * Declare the top-level entries that every program has: `Dimension` (2 or 3)
+   * and `Output directory`, documented by
    * @p output_description.
    */
   void

@@ -2,9 +2,9 @@
 #define phasefield_images_h
 
 #include <deal.II/base/function.h>
-#include <memory>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <memory>
 #include <phasefield/core/parameters.h>
 #include <string>
 #include <vector>
@@ -106,7 +106,7 @@ namespace PhaseField
      * values.
      */
     std::vector<double>
-    sample_on_pixel_grid(const dealii::DoFHandler<2>                 &dof_handler,
+    sample_on_pixel_grid(const dealii::DoFHandler<2> &dof_handler,
                          const dealii::TrilinosWrappers::MPI::Vector &u,
                          const unsigned int                           n);
   } // namespace Images

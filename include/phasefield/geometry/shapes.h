@@ -11,7 +11,7 @@
 namespace PhaseField
 {
   /**
-   * Signed distance functions of the shapes of DESIGN.md section 5
+   * Signed distance functions of the shapes of `Geometry / Shape`
    * (negative inside) and the phase field tanh(d/epsilon) built on them.
    */
   namespace Shapes
@@ -27,8 +27,7 @@ namespace PhaseField
       {}
 
       double
-      value(const dealii::Point<dim> &p,
-            const unsigned int = 0) const override
+      value(const dealii::Point<dim> &p, const unsigned int = 0) const override
       {
         return f(p);
       }

@@ -67,8 +67,8 @@ namespace PhaseField
        * the previous re-meshing, so that a stationary interface makes the
        * mesh alternate between two meshes.
        */
-      bool refine_unrefined_islands = true;
-      BoundaryConditions boundary_conditions = BoundaryConditions::natural;
+      bool               refine_unrefined_islands = true;
+      BoundaryConditions boundary_conditions      = BoundaryConditions::natural;
     };
 
     Discretization(const Settings &settings, const MPI_Comm mpi_communicator);
@@ -112,8 +112,8 @@ namespace PhaseField
      * constraints.
      */
     double
-    error(const Vector                     &u,
-          const dealii::Function<dim>      &exact,
+    error(const Vector                       &u,
+          const dealii::Function<dim>        &exact,
           const dealii::VectorTools::NormType norm) const;
 
     /**

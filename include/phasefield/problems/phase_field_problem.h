@@ -65,8 +65,7 @@ namespace PhaseField
     };
 
   protected:
-    PhaseFieldProblem(const WillmoreParameters &parameters,
-                      const Setup              &setup);
+    PhaseFieldProblem(const WillmoreParameters &parameters, const Setup &setup);
 
     /**
      * U = tanh(d/eps) at the nodes, then the other fields by the scheme.

@@ -19,8 +19,9 @@
 /**
  * The nested variational time discretization of Willmore flow (thesis
  * chapter 3) for Q1 elements with lumped mass: one step is the saddle
- * point of the Lagrangian (3.17) of the outer problem (3.18) constrained
- * by the inner (Allen-Cahn) problem (3.19), solved by Newton's method.
+ * point of the Lagrangian (3.19) of the outer problem (3.18a) constrained
+ * by the inner (Allen-Cahn) problem (3.18b), with the discrete energies
+ * (3.17a), (3.17b) (Definition 3.13), solved by Newton's method.
  */
 namespace PhaseField
 {
@@ -64,8 +65,8 @@ namespace PhaseField
             0.)
       , inner_tau(coefficients.inner_tau)
       , area_factor(coefficients.tau * coefficients.outer.area_weight)
-      , area_potential_factor(
-          1. / (2 * coefficients.epsilon * coefficients.epsilon))
+      , area_potential_factor(1. /
+                              (2 * coefficients.epsilon * coefficients.epsilon))
     {}
 
     /** a = mu tau / ttau^2: weight of M(V-U) in R_U and R_V. */
@@ -109,7 +110,7 @@ namespace PhaseField
 
   /**
    * One step of the nested scheme from U^k: the saddle-point system of
-   * thesis (3.17)-(3.19) in Z = (U, V, P), divided by 2 eps,
+   * thesis (3.19) in Z = (U, V, P), divided by 2 eps,
    *
    *   R_U = M(U-U^k) - a M(V-U) - M P   [+ tau eta (L U + M Psi'(U)/(2 eps^2))
    *                                      - (tau/eps) F]

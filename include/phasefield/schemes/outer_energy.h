@@ -8,7 +8,7 @@ namespace PhaseField
 {
   /**
    * The regularisation energy that a time step of the nested scheme
-   * decreases, beyond the distance term eps ||u - u^k||^2 (thesis (3.18),
+   * decreases, beyond the distance term eps ||u - u^k||^2 (thesis (3.17a),
    * generalised as in (5.7) and (6.3)):
    *
    *   eps ||u-u^k||^2 + 2 tau (mu (eps/2) ||(v-u)/ttau||^2 + eta a_eps[u]

@@ -1,10 +1,10 @@
 #ifndef phasefield_schemes_semi_implicit_scheme_h
 #define phasefield_schemes_semi_implicit_scheme_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-#include <deal.II/base/conditional_ostream.h>
 #include <memory>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/energies.h>

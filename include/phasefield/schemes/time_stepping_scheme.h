@@ -151,7 +151,7 @@ namespace PhaseField
   {
     Scheme scheme = Scheme::nested;
     /** Epsilon (1 for the biharmonic model). */
-    double epsilon = 1;
+    double epsilon   = 1;
     double inner_tau = 1;
     /** false: the biharmonic model problem (no Psi terms). */
     bool                   double_well = true;

@@ -32,10 +32,10 @@ namespace PhaseField
   {
   public:
     LinearSolver(const LinearSolverType type,
-                        const double           relative_tolerance,
-                        const unsigned int     max_iterations,
-                        const bool             symmetric                 = true,
-                        const unsigned int     refactorization_threshold = 8);
+                 const double           relative_tolerance,
+                 const unsigned int     max_iterations,
+                 const bool             symmetric                 = true,
+                 const unsigned int     refactorization_threshold = 8);
     ~LinearSolver();
 
     /** `automatic`: direct (MUMPS) in 2D, iterative in 3D. */
@@ -140,18 +140,17 @@ namespace PhaseField
     }
 
   private:
-
-    const LinearSolverType         solver_type;
-    const double                   relative_tolerance;
-    const unsigned int             max_iterations;
-    const bool                     symmetric;
-    const unsigned int             refactorization_threshold;
-    double                         tolerance;
+    const LinearSolverType               solver_type;
+    const double                         relative_tolerance;
+    const unsigned int                   max_iterations;
+    const bool                           symmetric;
+    const unsigned int                   refactorization_threshold;
+    double                               tolerance;
     std::unique_ptr<DirectFactorization> factorization;
-    unsigned int                   last_iterations            = 0;
-    unsigned int                   factorization_count        = 0;
-    bool                           constant_matrix            = false;
-    unsigned int                   pivoting_workspace_percent = 0;
+    unsigned int                         last_iterations            = 0;
+    unsigned int                         factorization_count        = 0;
+    bool                                 constant_matrix            = false;
+    unsigned int                         pivoting_workspace_percent = 0;
   };
 } // namespace PhaseField
 

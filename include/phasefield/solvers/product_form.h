@@ -29,7 +29,7 @@ namespace PhaseField
    */
   template <typename Operator>
   void
-  apply_symmetric_product(const Operator                      &a,
+  apply_symmetric_product(const Operator                              &a,
                           const dealii::TrilinosWrappers::MPI::Vector &diagonal,
                           dealii::TrilinosWrappers::MPI::Vector       &tmp,
                           dealii::TrilinosWrappers::MPI::Vector       &dst,
@@ -47,9 +47,9 @@ namespace PhaseField
   {
   public:
     ProductFormMatrix(const dealii::TrilinosWrappers::SparseMatrix &k_hat,
-                      const double                          w,
+                      const double                                  w,
                       const dealii::TrilinosWrappers::MPI::Vector  &d,
-                      const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass)
+                      const dealii::TrilinosWrappers::MPI::Vector &inverse_mass)
       : k_hat(k_hat)
       , w(w)
       , d(d)
@@ -70,7 +70,7 @@ namespace PhaseField
 
   private:
     const dealii::TrilinosWrappers::SparseMatrix &k_hat;
-    const double                          w;
+    const double                                  w;
     const dealii::TrilinosWrappers::MPI::Vector  &d;
     const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass;
     mutable dealii::TrilinosWrappers::MPI::Vector tmp;
@@ -80,7 +80,7 @@ namespace PhaseField
 
   /**
    * The preconditioner G^-1 M G^-1 of
-   * ReducedSystemSolver::solve_product_form(), with one multigrid cycle
+   * LinearSolver::solve_product_form(), with one multigrid cycle
    * for each G^-1.
    */
   class SchurPreconditioner
