@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Same results on 1 and 2 MPI ranks (DESIGN.md section 6): runs each given
+# Same results on 1 and 2 MPI ranks: runs each given
 # parameter file with 1 and with 2 ranks and prints, per statistics.csv
 # column, the largest relative difference over all steps (the meshes are
 # the same: p4est refines independently of the partition).

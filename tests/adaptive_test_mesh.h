@@ -1,23 +1,13 @@
-// The adaptive test mesh of the Jacobian tests: a narrow band around a
-// sphere of radius 0.3 at (0.45, ...) with hanging nodes, Q1 DoFs, their
-// hanging-node constraints and the lumped operators on them.
-#ifndef phasefield_adaptive_test_mesh_h
-#define phasefield_adaptive_test_mesh_h
+// The adaptive test mesh of the Jacobian tests: a Discretization with a
+// narrow band around a sphere of radius 0.3 at (0.45, ...), hanging nodes,
+// Q1 DoFs, their constraints and the lumped operators on them.
+#ifndef phasefield_tests_adaptive_test_mesh_h
+#define phasefield_tests_adaptive_test_mesh_h
 
-#include <deal.II/distributed/tria.h>
-
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/fe_q.h>
-
-#include <deal.II/grid/grid_generator.h>
-
-#include <deal.II/lac/affine_constraints.h>
-
-#include <phasefield/lumped_operators.h>
-#include <phasefield/narrow_band.h>
-#include <phasefield/shapes.h>
+#include <deal.II/base/mpi.h>
+#include <phasefield/core/parameters.h>
+#include <phasefield/geometry/shapes.h>
+#include <phasefield/mesh/discretization.h>
 
 namespace Testing
 {
@@ -33,26 +23,13 @@ namespace Testing
     explicit AdaptiveTestMesh(
       const PhaseField::StiffnessQuadrature stiffness_quadrature =
         PhaseField::StiffnessQuadrature::gauss)
-      : triangulation(MPI_COMM_WORLD)
-      , fe(1)
-      , dof_handler(triangulation)
-      , sphere(center(), 0.3)
+      : sphere(center(), 0.3)
+      , discretization(settings(stiffness_quadrature), MPI_COMM_WORLD)
+      , dof_handler(discretization.get_dof_handler())
+      , constraints(discretization.get_constraints())
+      , operators(discretization.get_operators())
     {
-      dealii::GridGenerator::hyper_cube(triangulation, 0., 1.);
-      triangulation.refine_global(2);
-      PhaseField::NarrowBand::refine_around_zero_level_set(
-        triangulation, sphere, 1.5, eps, dim == 2 ? 5 : 4);
-      dof_handler.distribute_dofs(fe);
-      dealii::IndexSet relevant;
-      dealii::DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      constraints.reinit(relevant);
-      dealii::DoFTools::make_hanging_node_constraints(dof_handler,
-                                                      constraints);
-      constraints.close();
-      operators.reinit(dof_handler,
-                       constraints,
-                       MPI_COMM_WORLD,
-                       stiffness_quadrature);
+      discretization.create_mesh(&sphere, eps);
     }
 
     static dealii::Point<dim>
@@ -64,12 +41,24 @@ namespace Testing
       return c;
     }
 
-    dealii::parallel::distributed::Triangulation<dim> triangulation;
-    dealii::FE_Q<dim>                                 fe;
-    dealii::DoFHandler<dim>                           dof_handler;
-    dealii::AffineConstraints<double>                 constraints;
-    const PhaseField::Shapes::SphereDistance<dim>     sphere;
-    PhaseField::LumpedOperators<dim>                  operators;
+    /** Levels 2 to 5 (2D) or 4 (3D), band of 1.5 eps. */
+    static typename PhaseField::Discretization<dim>::Settings
+    settings(const PhaseField::StiffnessQuadrature stiffness_quadrature)
+    {
+      typename PhaseField::Discretization<dim>::Settings s{};
+      s.mesh.coarsest_level       = 2;
+      s.mesh.finest_level         = dim == 2 ? 5 : 4;
+      s.mesh.adaptive             = true;
+      s.mesh.band_width           = 1.5;
+      s.mesh.stiffness_quadrature = stiffness_quadrature;
+      return s;
+    }
+
+    const PhaseField::Shapes::SphereDistance<dim> sphere;
+    PhaseField::Discretization<dim>               discretization;
+    const dealii::DoFHandler<dim>                &dof_handler;
+    const dealii::AffineConstraints<double>      &constraints;
+    const PhaseField::LumpedOperators<dim>       &operators;
   };
 } // namespace Testing
 

@@ -16,7 +16,7 @@
 #include "tests.h"
 
 #include <cmath>
-#include <phasefield/biharmonic_problem.h>
+#include <phasefield/problems/biharmonic_problem.h>
 
 namespace
 {

@@ -8,8 +8,9 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <map>
-#include <phasefield/images.h>
-#include <phasefield/shapes.h>
+#include <phasefield/geometry/images.h>
+#include <phasefield/geometry/shapes.h>
+#include <phasefield/problems/restoration_problem.h>
 
 int
 main(int argc, char **argv)
@@ -47,31 +48,16 @@ end
 )");
   EdgeRestorationParameters parameters;
   parameters.parse_parameters(prm);
-  const RestorationParameters &restoration = parameters.restoration;
-
-  WillmoreProblemOptions<2> options;
-  options.area_weight = restoration.eta;
-  options.signed_distance =
-    Images::create_damaged_image(parameters.willmore.geometry, restoration);
-  const auto inside = [&](const Point<2> &p) {
-    return p[0] > restoration.region.lower[0] &&
-           p[0] < restoration.region.upper[0] &&
-           p[1] > restoration.region.lower[1] &&
-           p[1] < restoration.region.upper[1];
-  };
-  options.u_is_free = inside;
-  WillmoreProblem<2> problem(parameters.willmore, options);
+  // the problem edge_restoration runs
+  RestorationProblem problem(parameters);
   problem.run();
 
-  const auto &dof_handler = problem.get_dof_handler();
-  IndexSet    relevant;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-  AffineConstraints<double> constraints(relevant);
-  DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-  constraints.close();
+  const Box2D &region      = parameters.restoration.region;
+  const auto  &dof_handler = problem.get_discretization().get_dof_handler();
+  const auto  &constraints = problem.get_discretization().get_constraints();
   std::map<types::global_dof_index, Point<2>> points;
   DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dof_handler, points);
-  const Shapes::PhaseFieldProfile<2> u0(*options.signed_distance,
+  const Shapes::PhaseFieldProfile<2> u0(problem.initial_signed_distance(),
                                         parameters.willmore.model.epsilon);
   const auto                        &u = problem.state().block(0);
 
@@ -81,7 +67,7 @@ end
         !constraints.is_constrained(dof))
       {
         const bool changed = (u[dof] != u0.value(point));
-        if (inside(point))
+        if (region.contains(point))
           n_changed_inside += changed;
         else
           {

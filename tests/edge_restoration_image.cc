@@ -7,7 +7,7 @@
 
 #include <cmath>
 #include <deal.II/base/point.h>
-#include <phasefield/images.h>
+#include <phasefield/geometry/images.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>

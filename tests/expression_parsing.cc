@@ -1,10 +1,10 @@
 // Parameters written as expressions in h (4*h, h^2, 0.03*h, 2^-6), and
 // the error messages for malformed or non-positive values.
 
-#include <phasefield/parameters.h>
-#include <phasefield/shapes.h>
-
 #include "tests.h"
+
+#include <phasefield/core/parameters.h>
+#include <phasefield/geometry/shapes.h>
 
 using namespace PhaseField;
 
@@ -51,15 +51,15 @@ main(int argc, char **argv)
   // A signed distance given as an expression is evaluated like the
   // built-in circle.
   GeometryParameters geometry;
-  geometry.shape      = "function";
-  geometry.expression = "sqrt((x-0.5)^2+(y-0.5)^2)-0.25";
-  const auto f        = Shapes::create_signed_distance<2>(geometry);
-  geometry.shape      = "circle";
-  geometry.radius     = 0.25;
-  const auto circle   = Shapes::create_signed_distance<2>(geometry);
+  geometry.shape                = "function";
+  geometry.expression           = "sqrt((x-0.5)^2+(y-0.5)^2)-0.25";
+  const auto f                  = Shapes::create_signed_distance<2>(geometry);
+  geometry.shape                = "circle";
+  geometry.radius               = 0.25;
+  const auto             circle = Shapes::create_signed_distance<2>(geometry);
   const dealii::Point<2> p(0.1, 0.7);
-  Testing::log() << "function " << f->value(p) << " circle "
-                 << circle->value(p) << std::endl;
+  Testing::log() << "function " << f->value(p) << " circle " << circle->value(p)
+                 << std::endl;
 
   geometry.shape      = "function";
   geometry.expression = "sqrt((x-0.5)^2+(y-0.5)^2-0.25";
@@ -70,11 +70,12 @@ main(int argc, char **argv)
     }
   catch (const InputError &error)
     {
-      Testing::log() << "malformed expression: error naming the parameter: "
-                     << (std::string(error.what()).find(
-                           "Geometry / Expression") != std::string::npos ?
-                           "yes" :
-                           "NO")
-                     << std::endl;
+      Testing::log()
+        << "malformed expression: error naming the parameter: "
+        << (std::string(error.what()).find("Geometry / Expression") !=
+                std::string::npos ?
+              "yes" :
+              "NO")
+        << std::endl;
     }
 }

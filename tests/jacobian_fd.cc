@@ -1,12 +1,12 @@
-// The exact Jacobian of the nested scheme (NestedScheme::jacobian_vmult)
+// The exact Jacobian of the nested scheme (NestedStep::jacobian_vmult)
 // agrees with central finite differences of the residual, and the
-// eliminated Newton solve (NestedScheme::solve_newton_system) solves
+// eliminated Newton solve (NestedStep::solve_jacobian) solves
 // J dZ = -R, in 2D and 3D, on an adaptive mesh with hanging nodes; in 2D
 // also with the area term of edge restoration (eta > 0) and U held fixed
 // at the DoFs with x < 0.3 (the 3-field solve, also with a
 // Levenberg-Marquardt shift of the UU block). With the area term, R_U at a
-// state with V, P re-solved for U (NestedScheme::solve_inner_problem) is
-// the gradient of the outer energy NestedScheme::outer_energy, the merit
+// state with V, P re-solved for U (NestedStep::solve_inner_problem) is
+// the gradient of the outer energy NestedStep::outer_energy, the merit
 // function of minimizing_newton_solve.
 
 #include "adaptive_test_mesh.h"
@@ -23,9 +23,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <map>
-#include <phasefield/narrow_band.h>
-#include <phasefield/nested_scheme.h>
-#include <phasefield/shapes.h>
+#include <phasefield/geometry/shapes.h>
+#include <phasefield/schemes/nested_scheme.h>
 
 using namespace dealii;
 using namespace PhaseField;
@@ -47,11 +46,10 @@ check(const LinearSolverType solver_type,
   const LumpedOperators<dim>          &ops         = mesh.operators;
 
   NestedCoefficients coeff;
-  coeff.epsilon     = eps;
-  coeff.tau         = 0.03 * h;
-  coeff.inner_tau   = h * h;
-  coeff.area_weight = eta;
-  coeff.u_shift     = shift;
+  coeff.epsilon           = eps;
+  coeff.tau               = 0.03 * h;
+  coeff.inner_tau         = h * h;
+  coeff.outer.area_weight = eta;
   IndexSet fixed(dof_handler.n_dofs());
   if (fix_some)
     {
@@ -63,10 +61,11 @@ check(const LinearSolverType solver_type,
         if (point[0] < 0.3)
           fixed.add_index(dof);
       fixed.compress();
-      coeff.fixed_u = &fixed;
+      coeff.outer.fixed_u = &fixed;
     }
-  const NestedScheme<dim> scheme(ops, coeff);
-  ReducedSystemSolver     solver(solver_type, 1e-12, 2000);
+  TrilinosWrappers::MPI::Vector old_u(ops.locally_owned_dofs, comm);
+  NestedStep<dim>               scheme(mesh.discretization, coeff, old_u);
+  LinearSolver                  solver(solver_type, 1e-12, 2000);
 
   using BlockVector = TrilinosWrappers::MPI::BlockVector;
   const std::vector<IndexSet> parts(3, ops.locally_owned_dofs);
@@ -80,7 +79,7 @@ check(const LinearSolverType solver_type,
   Functions::CosineFunction<dim> wave;
   TrilinosWrappers::MPI::Vector  w(ops.locally_owned_dofs, comm);
   VectorTools::interpolate(dof_handler, wave, w);
-  TrilinosWrappers::MPI::Vector old_u(z.block(Field::U));
+  old_u = z.block(Field::U);
   old_u.add(0.05, w);
   z.block(Field::V).add(0.02, w);
   z.block(Field::P).add(0.5 * z.block(Field::P).linfty_norm(), w);
@@ -100,8 +99,8 @@ check(const LinearSolverType solver_type,
   BlockVector  zp(z), zm(z);
   zp.add(step, x);
   zm.add(-step, x);
-  scheme.residual(old_u, zp, rp);
-  scheme.residual(old_u, zm, rm);
+  scheme.residual(zp, rp);
+  scheme.residual(zm, rm);
   rp -= rm;
   rp /= 2 * step;
   scheme.jacobian_vmult(z, x, jx);
@@ -129,9 +128,12 @@ check(const LinearSolverType solver_type,
     }
 
   // Newton solve: J dz = -r
-  scheme.residual(old_u, z, r);
-  scheme.solve_newton_system(z, r, dz, solver);
-  scheme.jacobian_vmult(z, dz, jx);
+  scheme.residual(z, r);
+  if (shift > 0)
+    scheme.solve_shifted_jacobian(z, r, dz, solver, shift);
+  else
+    scheme.solve_jacobian(z, r, dz, solver);
+  scheme.jacobian_vmult(z, dz, jx, shift);
   jx += r;
   const double rel = scheme.residual_norm(jx) / scheme.residual_norm(r);
   Testing::log() << "  |J dz + R| / |R| "
@@ -145,13 +147,13 @@ check(const LinearSolverType solver_type,
   BlockVector y(z);
   y.block(Field::U) = z.block(Field::U);
   scheme.solve_inner_problem(y, solver, 1e-13);
-  scheme.residual(old_u, y, r);
+  scheme.residual(y, r);
   const double slope     = r.block(Field::U) * x.block(Field::U);
   const auto   energy_at = [&](const double s) {
     BlockVector trial(y);
     trial.block(Field::U).add(s, x.block(Field::U));
     scheme.solve_inner_problem(trial, solver, 1e-13);
-    return scheme.outer_energy(old_u, trial);
+    return scheme.outer_energy(trial);
   };
   const double fd_step = 1e-5;
   const double fd = (energy_at(fd_step) - energy_at(-fd_step)) / (2 * fd_step);

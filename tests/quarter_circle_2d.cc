@@ -11,8 +11,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::vector<std::string> header;
-  const auto               rows = Testing::run_willmore(R"(
+  std::vector<std::string>                 header;
+  const auto                               rows = Testing::run_willmore(R"(
 set Dimension = 2
 subsection Geometry
   set Shape = quarter circle
@@ -34,7 +34,7 @@ subsection Output
   set VTU interval = 2
 end
 )",
-                                               header);
+                                          header);
   Testing::print_columns(rows, header, Testing::checked_columns());
 
   Testing::check_quarter_circle(rows, header, 0.4, 0.05);

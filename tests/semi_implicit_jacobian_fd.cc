@@ -1,50 +1,43 @@
 // The exact Jacobian of the semi-implicit Du-Liu-Wang scheme
-// (SemiImplicitScheme::jacobian_vmult) agrees with central finite
+// (SemiImplicitStep::jacobian_vmult) agrees with central finite
 // differences of the residual, and the eliminated Newton solve
-// (SemiImplicitScheme::solve_newton_system) solves J dZ = -R, in 2D and
+// (SemiImplicitStep::solve_jacobian) solves J dZ = -R, in 2D and
 // 3D, on an adaptive mesh with hanging nodes, with the direct and the
 // iterative (GMRES + AMG) linear solver, and in 2D with the stiffness
 // matrix integrated by the Gauss-Lobatto rule (the thesis' 5-point matrix
 // on uniform meshes).
 
-#include <deal.II/base/function_lib.h>
-#include <deal.II/base/point.h>
-
-#include <deal.II/distributed/tria.h>
-
-#include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/fe_q.h>
-
-#include <deal.II/grid/grid_generator.h>
-
-#include <deal.II/numerics/vector_tools.h>
-
-#include <phasefield/narrow_band.h>
-#include <phasefield/semi_implicit_scheme.h>
-#include <phasefield/shapes.h>
-
 #include "adaptive_test_mesh.h"
 #include "tests.h"
 
 #include <cmath>
+#include <deal.II/base/function_lib.h>
+#include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <phasefield/geometry/shapes.h>
+#include <phasefield/schemes/semi_implicit_scheme.h>
 
 using namespace dealii;
 using namespace PhaseField;
 
 template <int dim>
 void
-check(const LinearSolverType    solver_type,
-      const StiffnessQuadrature stiffness_quadrature = StiffnessQuadrature::gauss)
+check(
+  const LinearSolverType    solver_type,
+  const StiffnessQuadrature stiffness_quadrature = StiffnessQuadrature::gauss)
 {
-  const MPI_Comm                         comm = MPI_COMM_WORLD;
-  const Testing::AdaptiveTestMesh<dim>   mesh(stiffness_quadrature);
-  const double                           eps         = mesh.eps;
-  const double                           h           = mesh.h;
-  const auto &                           dof_handler = mesh.dof_handler;
-  const auto &                           constraints = mesh.constraints;
-  const auto &                           sphere      = mesh.sphere;
-  const LumpedOperators<dim> &           ops         = mesh.operators;
+  const MPI_Comm                       comm = MPI_COMM_WORLD;
+  const Testing::AdaptiveTestMesh<dim> mesh(stiffness_quadrature);
+  const double                         eps         = mesh.eps;
+  const double                         h           = mesh.h;
+  const auto                          &dof_handler = mesh.dof_handler;
+  const auto                          &constraints = mesh.constraints;
+  const auto                          &sphere      = mesh.sphere;
+  const LumpedOperators<dim>          &ops         = mesh.operators;
 
   using BlockVector = TrilinosWrappers::MPI::BlockVector;
   const std::vector<IndexSet> parts(2, ops.locally_owned_dofs);
@@ -55,9 +48,9 @@ check(const LinearSolverType    solver_type,
   VectorTools::interpolate(dof_handler,
                            u0,
                            old_state.block(SemiImplicitField::U));
-  const SemiImplicitScheme<dim> scheme(ops, eps, 0.03 * h, old_state);
+  SemiImplicitStep<dim> scheme(mesh.discretization, eps, 0.03 * h, old_state);
   scheme.initialize_f(old_state);
-  ReducedSystemSolver solver(solver_type, 1e-12, 2000, /*symmetric=*/false);
+  LinearSolver solver(solver_type, 1e-12, 2000, /*symmetric=*/false);
 
   // A generic state and direction: smooth perturbations of both fields.
   Functions::CosineFunction<dim> wave;
@@ -65,8 +58,8 @@ check(const LinearSolverType    solver_type,
   VectorTools::interpolate(dof_handler, wave, w);
   z = old_state;
   z.block(SemiImplicitField::U).add(0.05, w);
-  z.block(SemiImplicitField::F).add(
-    0.5 * z.block(SemiImplicitField::F).linfty_norm(), w);
+  z.block(SemiImplicitField::F)
+    .add(0.5 * z.block(SemiImplicitField::F).linfty_norm(), w);
   for (unsigned int b = 0; b < 2; ++b)
     {
       x.block(b) = w;
@@ -79,7 +72,8 @@ check(const LinearSolverType    solver_type,
   Testing::log() << dim << "D, " << dof_handler.n_dofs() << " DoFs, "
                  << constraints.n_constraints() << " hanging-node constraints"
                  << (constraints.n_constraints() > 0 ? " (> 0)" : "")
-                 << (stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
+                 << (stiffness_quadrature ==
+                         StiffnessQuadrature::gauss_lobatto ?
                        ", Gauss-Lobatto stiffness" :
                        "")
                  << std::endl
@@ -113,7 +107,7 @@ check(const LinearSolverType    solver_type,
 
   // Newton solve: J dz = -r
   scheme.residual(z, r);
-  scheme.solve_newton_system(z, r, dz, solver);
+  scheme.solve_jacobian(z, r, dz, solver);
   scheme.jacobian_vmult(z, dz, jx);
   jx += r;
   const double rel = scheme.residual_norm(jx) / scheme.residual_norm(r);

@@ -13,8 +13,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::vector<std::string> header;
-  const auto               rows = Testing::run_willmore(R"(
+  std::vector<std::string>                 header;
+  const auto                               rows = Testing::run_willmore(R"(
 set Dimension = 3
 subsection Geometry
   set Shape = sphere
@@ -37,10 +37,10 @@ subsection Output
   set VTU interval = 0
 end
 )",
-                                               header);
+                                          header);
   Testing::print_columns(rows, header, Testing::checked_columns());
   const double pi   = M_PI;
-  const auto & last = rows.back();
+  const auto  &last = rows.back();
   const double w    = last[Testing::column(header, "willmore_energy")];
   const double a    = last[Testing::column(header, "area_energy")];
   const double vol  = last[Testing::column(header, "inside_measure")];

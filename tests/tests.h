@@ -1,15 +1,18 @@
 // Small replacement of deal.II's tests.h (which deal.II does not install):
 // every test writes what it checks into the file "output", which the test
 // harness compares with the .output file using numdiff.
-#ifndef phasefield_tests_h
-#define phasefield_tests_h
-
-#include <deal.II/base/mpi.h>
+#ifndef phasefield_tests_tests_h
+#define phasefield_tests_tests_h
 
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <phasefield/core/parameters.h>
+#include <phasefield/problems/restoration_parameters.h>
+#include <phasefield/problems/restoration_problem.h>
+#include <phasefield/problems/willmore_problem.h>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -70,10 +73,6 @@ namespace Testing
   }
 } // namespace Testing
 
-#endif
-
-#include <phasefield/parameters.h>
-#include <phasefield/willmore_problem.h>
 
 namespace Testing
 {
@@ -86,7 +85,8 @@ namespace Testing
   {
     dealii::ParameterHandler prm;
     PhaseField::WillmoreParameters::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text + "\nset Output directory = results\n");
+    prm.parse_input_from_string(prm_text +
+                                "\nset Output directory = results\n");
     PhaseField::WillmoreParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.dimension == 2)
@@ -112,8 +112,8 @@ namespace Testing
   /** Print the named columns of @p rows with 6 significant digits. */
   inline void
   print_columns(const std::vector<std::vector<double>> &rows,
-                const std::vector<std::string> &        header,
-                const std::vector<std::string> &        columns)
+                const std::vector<std::string>         &header,
+                const std::vector<std::string>         &columns)
   {
     for (const auto &c : columns)
       log() << c << ' ';
@@ -127,8 +127,6 @@ namespace Testing
   }
 } // namespace Testing
 
-#include <phasefield/restoration_parameters.h>
-#include <phasefield/restoration_problem.h>
 
 namespace Testing
 {
@@ -187,27 +185,29 @@ namespace Testing
    */
   inline void
   check_quarter_circle(const std::vector<std::vector<double>> &rows,
-                       const std::vector<std::string> &        header,
+                       const std::vector<std::string>         &header,
                        const double                            r0,
-                       const double energy_tolerance)
+                       const double                            energy_tolerance)
   {
     const double pi = M_PI;
     bool         ok = true;
     for (unsigned int i = 1; i < rows.size(); ++i)
       {
-        const auto & row     = rows[i];
+        const auto  &row     = rows[i];
         const double t       = row[column(header, "time")];
         const double r_exact = std::pow(2 * t + std::pow(r0, 4), 0.25);
         const double r_measured =
           std::sqrt(4 * row[column(header, "inside_measure")] / pi);
         const double w = row[column(header, "willmore_energy")];
-        ok = ok && std::abs(r_measured / r_exact - 1) < 0.01;
+        ok             = ok && std::abs(r_measured / r_exact - 1) < 0.01;
         ok = ok && std::abs(w / (pi / (4 * r_exact)) - 1) < energy_tolerance;
         ok = ok && w <= rows[i - 1][column(header, "willmore_energy")];
         ok = ok && row[column(header, "newton_iterations")] <= 10;
       }
     log() << "radius within 1%, Willmore energy within "
-          << std::round(100 * energy_tolerance) << "% and decreasing: "
-          << (ok ? "yes" : "NO") << std::endl;
+          << std::round(100 * energy_tolerance)
+          << "% and decreasing: " << (ok ? "yes" : "NO") << std::endl;
   }
 } // namespace Testing
+
+#endif

@@ -8,9 +8,9 @@
  * Usage: biharmonic_flow <parameter file>; biharmonic_flow --help lists
  * every parameter. See doc/biharmonic_flow.md.
  */
-#include <phasefield/biharmonic_parameters.h>
-#include <phasefield/biharmonic_problem.h>
-#include <phasefield/program.h>
+#include <phasefield/core/program.h>
+#include <phasefield/problems/biharmonic_parameters.h>
+#include <phasefield/problems/biharmonic_problem.h>
 
 int
 main(int argc, char **argv)

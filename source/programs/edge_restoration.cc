@@ -6,9 +6,9 @@
  * Usage: edge_restoration <parameter file>; edge_restoration --help lists
  * every parameter. See doc/edge_restoration.md.
  */
-#include <phasefield/program.h>
-#include <phasefield/restoration_parameters.h>
-#include <phasefield/restoration_problem.h>
+#include <phasefield/core/program.h>
+#include <phasefield/problems/restoration_parameters.h>
+#include <phasefield/problems/restoration_problem.h>
 
 int
 main(int argc, char **argv)

@@ -5,9 +5,9 @@
  * Usage: willmore_flow <parameter file>; willmore_flow --help lists every
  * parameter. See doc/willmore_flow.md.
  */
-#include <phasefield/parameters.h>
-#include <phasefield/program.h>
-#include <phasefield/willmore_problem.h>
+#include <phasefield/core/parameters.h>
+#include <phasefield/core/program.h>
+#include <phasefield/problems/willmore_problem.h>
 
 int
 main(int argc, char **argv)

@@ -1,0 +1,269 @@
+#ifndef phasefield_parameters_h
+#define phasefield_parameters_h
+
+#include <cmath>
+#include <deal.II/base/parameter_handler.h>
+#include <string>
+#include <vector>
+
+/**
+ * Parameter structs of the phase-field programs. Each struct owns one
+ * subsection of the .prm file and has the usual pair of
+ * declare_parameters() / parse_parameters() functions. Validation that
+ * needs more than a pattern (e.g. Finest level >= Coarsest level) is done
+ * in parse_parameters() and reported with the name of the parameter.
+ */
+namespace PhaseField
+{
+  /**
+   * Thrown for invalid user input. The message names the offending
+   * parameter; programs print it and exit with a non-zero status.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    explicit InputError(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  /**
+   * Evaluate a muParser expression in the mesh size @p h (e.g. `4*h`,
+   * `h^2`, `0.03*h`, `2^-6`). @p parameter_name is used in the error
+   * message if the expression is malformed or not finite.
+   */
+  double
+  evaluate_expression_in_h(const std::string &expression,
+                           const double       h,
+                           const std::string &parameter_name);
+
+  /**
+   * Parse a comma separated list of doubles; throws InputError naming
+   * @p parameter_name on failure.
+   */
+  std::vector<double>
+  parse_double_list(const std::string &text, const std::string &parameter_name);
+
+  /** Quadrature rule for the cell integrals of the stiffness matrix L. */
+  enum class StiffnessQuadrature
+  {
+    /**
+     * 2-point Gauss rule per direction: the exact Q1 stiffness matrix (on a
+     * uniform 2D mesh the 9-point stencil (1/3)[-1 -1 -1; -1 8 -1; -1 -1 -1]).
+     */
+    gauss,
+    /**
+     * 2-point Gauss-Lobatto rule per direction, i.e. the cell vertices (the
+     * rule of the lumped mass). On a uniform mesh this is the 5-point
+     * (7-point in 3D) stencil, the stiffness matrix of the P1 elements on
+     * the squares cut into right triangles that the thesis uses (section
+     * 2.2, Fig. 2.1). Its consistency error for a smooth U,
+     * (h^2/12) (d_x^4 + d_y^4) U, is smaller than the Gauss one,
+     * (h^2/12) (Lap^2 + 2 d_x^2 d_y^2) U, for every direction of the
+     * interface but the axes (where both agree). This matters when h is
+     * not small against eps: for the quarter circle at h = eps/2 the
+     * semi-implicit Willmore energy of the sampled tanh profile is 5.61
+     * instead of 10.98 (exact 1.96; doc/willmore_flow.md).
+     */
+    gauss_lobatto
+  };
+
+  /** Subsection `Geometry`: the initial shape. */
+  struct GeometryParameters
+  {
+    /** One of the shape names of `--help` (circle, sphere, torus, ...). */
+    std::string shape;
+    /** Centre; empty means the centre of the unit cell (0.5, ..., 0.5). */
+    std::vector<double> center;
+    /** Second centre (only used by `two circles`). */
+    std::vector<double> second_center;
+    double              radius;
+    /** Edge lengths, disc diameter/thickness, semi-axes, torus R and r. */
+    std::vector<double> sizes;
+    /** Signed distance as a muParser expression in x, y (, z). */
+    std::string expression;
+
+    /**
+     * Declare the subsection. A program with shapes of its own (edge
+     * restoration's images) adds their names, separated by `|`, in
+     * @p extra_shapes and their documentation in @p extra_documentation.
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &extra_shapes        = "",
+                       const std::string        &extra_documentation = "");
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection `Mesh`: narrow-band adaptivity on [0,1]^d. */
+  struct MeshParameters
+  {
+    unsigned int finest_level;
+    unsigned int coarsest_level;
+    bool         adaptive;
+    /** Half width of the finest band, in units of epsilon. */
+    double band_width;
+    /** Re-mesh every this many time steps. */
+    unsigned int refinement_interval;
+    /** Quadrature of the stiffness matrix L (see StiffnessQuadrature). */
+    StiffnessQuadrature stiffness_quadrature;
+
+    /** Finest mesh size h = 2^-finest_level. */
+    double
+    h() const;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Time stepping scheme of willmore_flow. */
+  enum class Scheme
+  {
+    /** Nested variational time discretization (thesis chapter 3). */
+    nested,
+    /** Du-Liu-Wang semi-implicit scheme (thesis section 5.2). */
+    semi_implicit
+  };
+
+  /**
+   * Subsections `Phase field` and `Time stepping`. The raw expressions are
+   * kept so that they can be evaluated once h is known (see evaluate()).
+   */
+  struct ModelParameters
+  {
+    Scheme       scheme;
+    std::string  epsilon_expression;
+    std::string  tau_expression;
+    std::string  inner_tau_expression;
+    unsigned int n_steps;
+    /**
+     * Start-up: this many extra steps before the n_steps steps of size
+     * tau, of sizes tau / 2^n_ramp_steps, ..., tau / 4, tau / 2.
+     */
+    unsigned int n_ramp_steps;
+
+    /** Size of time step @p step (1-based), see n_ramp_steps. */
+    double
+    step_size(const unsigned int step) const
+    {
+      return step <= n_ramp_steps ?
+               std::ldexp(tau, -static_cast<int>(n_ramp_steps - step + 1)) :
+               tau;
+    }
+
+    /** Values after evaluate(). */
+    double epsilon   = 0;
+    double tau       = 0;
+    double inner_tau = 0;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+    /** Evaluate the expressions at mesh size @p h and validate them. */
+    void
+    evaluate(const double h);
+  };
+
+  /** Subsection `Newton`. */
+  struct NewtonParameters
+  {
+    /** Stop when ||R||_{M^-1} <= tolerance * ||R_0||_{M^-1} ... */
+    double relative_tolerance;
+    /** ... or when ||R||_{M^-1} <= absolute tolerance. */
+    double       absolute_tolerance;
+    unsigned int max_iterations;
+    /** Backtracking halvings of one Newton update before giving up. */
+    unsigned int max_damping_steps;
+    /**
+     * Once per time step a full update may increase the residual norm by
+     * up to this factor (1: always monotone).
+     */
+    double watchdog_factor;
+    /** How often a failed time step may be retried with half the step. */
+    unsigned int max_step_halvings;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** How the reduced (Schur complement) system is solved. */
+  enum class LinearSolverType
+  {
+    automatic,
+    direct,
+    iterative
+  };
+
+  /** Subsection `Linear solver`. */
+  struct LinearSolverParameters
+  {
+    LinearSolverType type;
+    double           relative_tolerance;
+    unsigned int     max_iterations;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection `Output`. */
+  struct OutputParameters
+  {
+    /** Write VTU every this many steps (0: never). */
+    unsigned int vtu_interval;
+    bool         verbose;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** All parameters of willmore_flow. */
+  struct WillmoreParameters
+  {
+    unsigned int           dimension;
+    std::string            output_directory;
+    GeometryParameters     geometry;
+    MeshParameters         mesh;
+    ModelParameters        model;
+    NewtonParameters       newton;
+    LinearSolverParameters linear_solver;
+    OutputParameters       output;
+
+    /** @p extra_shapes, @p extra_documentation: see GeometryParameters. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &extra_shapes        = "",
+                       const std::string        &extra_documentation = "");
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * Read @p filename into @p prm. Missing files, unknown parameters and
+   * values that violate their pattern become an InputError with a message
+   * that names the file and the parameter.
+   */
+  void
+  read_parameter_file(dealii::ParameterHandler &prm,
+                      const std::string        &filename);
+
+  /**
+   * Declare the top-level entries that every program has: `Dimension` (2 or 3)
+   * and `Output directory`, documented by
+   * @p output_description.
+   */
+  void
+  declare_common_parameters(dealii::ParameterHandler &prm,
+                            const std::string        &output_description);
+} // namespace PhaseField
+
+#endif

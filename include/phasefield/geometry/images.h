@@ -1,0 +1,115 @@
+#ifndef phasefield_images_h
+#define phasefield_images_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <memory>
+#include <phasefield/core/parameters.h>
+#include <string>
+#include <vector>
+
+namespace PhaseField
+{
+  /** An axis-aligned box [lower[0], upper[0]] x [lower[1], upper[1]]. */
+  struct Box2D
+  {
+    std::vector<double> lower;
+    std::vector<double> upper;
+
+    /** Is the box empty (not given)? */
+    bool
+    empty() const
+    {
+      return lower.empty();
+    }
+
+    /** Is @p p in the open box? */
+    bool
+    contains(const dealii::Point<2> &p) const
+    {
+      return p[0] > lower[0] && p[0] < upper[0] && p[1] > lower[1] &&
+             p[1] < upper[1];
+    }
+  };
+
+  /**
+   * The input images of edge restoration (thesis section 5.3) as signed
+   * distance functions (negative inside) on [0,1]^2: the built-in damaged
+   * shapes of Fig. 5.6 and 5.7 and thresholded PNG images.
+   */
+  namespace Images
+  {
+    /**
+     * Signed distance of the (damaged) input shape: `damaged circle`,
+     * `cross`, `bar`, `image` (the PNG @p image_file, pixels darker than
+     * @p threshold inside), or any shape of willmore_flow, minus the box
+     * @p damage if it is not empty. Throws InputError for inconsistent
+     * sizes and missing or unreadable image files.
+     */
+    std::shared_ptr<dealii::Function<2>>
+    create_damaged_image(const GeometryParameters &geometry,
+                         const std::string        &image_file,
+                         const double              threshold,
+                         const Box2D              &damage);
+
+    /** Signed distance to the box [lower, upper] (negative inside). */
+    double
+    box_distance(const dealii::Point<2>    &p,
+                 const std::vector<double> &lower,
+                 const std::vector<double> &upper);
+
+    /**
+     * Signed distance of a thresholded grayscale PNG image: pixels darker
+     * than the threshold are inside. The image is mapped onto [0,1]^2 with
+     * square pixels (its longer side spans [0,1]); the distance of the
+     * pixel centres to the edge (half-way between inside and outside
+     * pixels) is computed by an exact Euclidean distance transform and
+     * interpolated bilinearly.
+     */
+    class ImageDistance : public dealii::Function<2>
+    {
+    public:
+      /** Read @p filename (VTK's PNG reader); throws InputError. */
+      ImageDistance(const std::string &filename, const double threshold);
+
+      double
+      value(const dealii::Point<2> &p,
+            const unsigned int      component = 0) const override;
+
+      /** Image size in pixels. */
+      unsigned int nx = 0, ny = 0;
+
+    private:
+      /** Pixel size on [0,1]^2. */
+      double pixel_size = 0;
+      /** Signed distance at the pixel centres, row by row from the bottom. */
+      std::vector<double> distance;
+    };
+
+    /**
+     * Write a PNG picture of phase-field values sampled at the centres of
+     * an n x n pixel grid on [0,1]^2 (row by row from the bottom): gray
+     * from black (U = -1, inside) to white (U = +1), the box @p region
+     * outlined in red. Uses VTK's PNG writer; call on one rank only.
+     */
+    void
+    write_picture(const std::vector<double> &values,
+                  const unsigned int         n,
+                  const Box2D               &region,
+                  const std::string         &filename);
+
+    /**
+     * Sample the Q1 function @p u (locally owned vector on @p dof_handler of
+     * an axis-parallel mesh of [0,1]^2) at the centres of an n x n pixel
+     * grid, row by row from the bottom. Collective; every rank gets all
+     * values.
+     */
+    std::vector<double>
+    sample_on_pixel_grid(const dealii::DoFHandler<2> &dof_handler,
+                         const dealii::TrilinosWrappers::MPI::Vector &u,
+                         const unsigned int                           n);
+  } // namespace Images
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,188 @@
+#ifndef phasefield_mesh_discretization_h
+#define phasefield_mesh_discretization_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/vector_tools_common.h>
+#include <phasefield/core/parameters.h>
+#include <phasefield/mesh/lumped_operators.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PhaseField
+{
+  /** Boundary conditions built into the scalar Q1 space of all fields. */
+  enum class BoundaryConditions
+  {
+    /** No constraints but hanging nodes (natural conditions). */
+    natural,
+    /** Homogeneous Dirichlet conditions on the whole boundary. */
+    dirichlet,
+    /** Periodic in every direction of the unit cell. */
+    periodic
+  };
+
+  /**
+   * The discretisation that every program of this library works on: a
+   * distributed quad/hex mesh of [0,1]^dim (p4est), one scalar Q1 space
+   * shared by all fields of a scheme, its constraints, the lumped mass and
+   * stiffness matrices (LumpedOperators), narrow-band re-meshing around
+   * the diffuse interface with the transfer of any number of fields, and
+   * VTU/PVTU output with a .pvd time series.
+   *
+   * The fields of a scheme ((U, V, P) or (U, F)) are the blocks of a
+   * Trilinos block vector whose blocks all live in this one space
+   * (reinit()). Block 0 is always the phase field U, which steers the
+   * narrow band.
+   */
+  template <int dim>
+  class Discretization
+  {
+  public:
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    /** What the discretisation is built from. */
+    struct Settings
+    {
+      /** Levels, narrow band width, stiffness quadrature. */
+      MeshParameters mesh;
+      /**
+       * Hysteresis of the narrow band: cells are coarsened only outside
+       * this many times `Mesh / Band width` (1: coarsen everything outside
+       * the refinement band). Coarsening where 1 - |U| is not negligible
+       * changes the discrete energy at every re-meshing.
+       */
+      double coarsening_band_factor = 1;
+      /**
+       * Keep deal.II's mesh smoothing eliminate_unrefined_islands (refine
+       * a coarse cell surrounded by finer ones). With narrow-band
+       * coarsening far from the interface it can undo the coarsening of
+       * the previous re-meshing, so that a stationary interface makes the
+       * mesh alternate between two meshes.
+       */
+      bool               refine_unrefined_islands = true;
+      BoundaryConditions boundary_conditions      = BoundaryConditions::natural;
+    };
+
+    Discretization(const Settings &settings, const MPI_Comm mpi_communicator);
+
+    /**
+     * Create the mesh of [0,1]^dim and set up the DoFs: uniform at the
+     * finest level if `Mesh / Adaptive` is false or @p signed_distance is
+     * null; otherwise at the coarsest level with every cell within
+     * `Band width` * @p epsilon of the zero level set of
+     * @p signed_distance on the finest level.
+     */
+    void
+    create_mesh(const dealii::Function<dim> *signed_distance,
+                const double                 epsilon);
+
+    /**
+     * Adapt the narrow band to the phase field in block 0 of @p fields
+     * and transfer all blocks to the new mesh (interpolation; the
+     * constraints are not yet distributed). Returns false, leaving mesh
+     * and fields alone, if no cell is to be refined or coarsened.
+     * Collective.
+     */
+    bool
+    adapt_to_phase_field(BlockVector &fields);
+
+    /** @p v = @p n_fields blocks in the Q1 space, locally owned, zero. */
+    void
+    reinit(BlockVector &v, const unsigned int n_fields) const;
+
+    /** Apply the constraints (hanging nodes, boundary) to every block. */
+    void
+    distribute_constraints(BlockVector &v) const;
+
+    /** Nodal interpolation of @p function into @p v. */
+    void
+    interpolate(const dealii::Function<dim> &function, Vector &v) const;
+
+    /**
+     * ||@p u - @p exact|| in the norm @p norm (L2 or H1), by Gauss
+     * quadrature with 3 points per direction; @p u must satisfy the
+     * constraints.
+     */
+    double
+    error(const Vector                       &u,
+          const dealii::Function<dim>        &exact,
+          const dealii::VectorTools::NormType norm) const;
+
+    /**
+     * Write the named @p fields with the MPI subdomain and refinement
+     * level of every cell as solution_<step>.pvtu into @p directory and
+     * add them to solution.pvd there (with the time @p time).
+     */
+    void
+    write_output(
+      const std::string                                         &directory,
+      const unsigned int                                         step,
+      const double                                               time,
+      const std::vector<std::pair<std::string, const Vector *>> &fields);
+
+    const dealii::parallel::distributed::Triangulation<dim> &
+    get_triangulation() const
+    {
+      return triangulation;
+    }
+    const dealii::DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const dealii::AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+    const LumpedOperators<dim> &
+    get_operators() const
+    {
+      return operators;
+    }
+    MPI_Comm
+    get_mpi_communicator() const
+    {
+      return mpi_communicator;
+    }
+    const Settings &
+    get_settings() const
+    {
+      return settings;
+    }
+
+    /** Number of DoFs of one field. */
+    dealii::types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+  private:
+    /** DoFs, constraints and lumped operators on the current mesh. */
+    void
+    setup_dofs();
+
+    const Settings settings;
+    MPI_Comm       mpi_communicator;
+
+    dealii::parallel::distributed::Triangulation<dim> triangulation;
+    dealii::FE_Q<dim>                                 fe;
+    dealii::DoFHandler<dim>                           dof_handler;
+    dealii::AffineConstraints<double>                 constraints;
+    LumpedOperators<dim>                              operators;
+
+    /** Time and file of every output written so far (for the .pvd). */
+    std::vector<std::pair<double, std::string>> pvd_records;
+  };
+} // namespace PhaseField
+
+#endif

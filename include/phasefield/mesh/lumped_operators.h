@@ -1,0 +1,100 @@
+#ifndef phasefield_lumped_operators_h
+#define phasefield_lumped_operators_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/parameters.h>
+#include <vector>
+
+namespace PhaseField
+{
+  /**
+   * The two mesh-dependent operators of every scheme in this library, for
+   * one scalar Q1 space with hanging-node constraints:
+   *
+   * - the lumped mass matrix M (Gauss-Lobatto quadrature on the cell
+   *   vertices), stored as the vector of its diagonal. Cell contributions
+   *   at hanging vertices are distributed to their parents, so M is the
+   *   diagonal of a positive weighted nodal inner product on the
+   *   conforming space; its entries are zero at constrained DoFs;
+   * - the stiffness matrix L, condensed with the constraints, integrated
+   *   with the rule chosen by StiffnessQuadrature (exact by default).
+   *
+   * Nonlinear terms such as M[Psi''(V)] are then nodal: their assembly
+   * costs one loop over the locally owned entries of a vector.
+   */
+  template <int dim>
+  class LumpedOperators
+  {
+  public:
+    /**
+     * Assemble M and L on @p dof_handler (scalar Q1), L with the rule
+     * @p stiffness_quadrature.
+     */
+    void
+    reinit(const dealii::DoFHandler<dim>           &dof_handler,
+           const dealii::AffineConstraints<double> &constraints,
+           const MPI_Comm                           mpi_communicator,
+           const StiffnessQuadrature                stiffness_quadrature =
+             StiffnessQuadrature::gauss);
+
+    /** Diagonal of the lumped mass matrix (zero at constrained DoFs). */
+    dealii::TrilinosWrappers::MPI::Vector lumped_mass;
+
+    /**
+     * Inverse of the lumped mass. At constrained DoFs, where the mass is
+     * zero, it holds the inverse of a typical cell mass so that the
+     * reduced systems stay regular; all residual entries there are zero.
+     */
+    dealii::TrilinosWrappers::MPI::Vector inverse_lumped_mass;
+
+    /** Stiffness matrix, condensed. */
+    dealii::TrilinosWrappers::SparseMatrix stiffness;
+
+    /** Local indices (into the locally owned range) of constrained DoFs. */
+    std::vector<unsigned int> constrained_local_indices;
+
+    dealii::IndexSet locally_owned_dofs;
+    dealii::IndexSet locally_relevant_dofs;
+
+    /**
+     * @p matrix = @p stiffness_factor L + M[@p nodal_weight], i.e. the
+     * stiffness matrix plus the lumped mass weighted nodally.
+     */
+    void
+    stiffness_plus_weighted_mass(
+      const double                                 stiffness_factor,
+      const dealii::TrilinosWrappers::MPI::Vector &nodal_weight,
+      dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
+
+    /**
+     * Add @p values (one per locally owned DoF) to the diagonal of
+     * @p matrix, whose sparsity pattern contains the diagonal, and compress.
+     */
+    void
+    add_to_diagonal(const dealii::TrilinosWrappers::MPI::Vector &values,
+                    dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
+
+    /** Set all constrained entries of @p vector to zero. */
+    void
+    zero_constrained(dealii::TrilinosWrappers::MPI::Vector &vector) const;
+
+    /** (x, y)_M = sum_i m_i x_i y_i. */
+    double
+    mass_product(const dealii::TrilinosWrappers::MPI::Vector &x,
+                 const dealii::TrilinosWrappers::MPI::Vector &y) const;
+
+    /** x^T L x over the unconstrained DoFs, i.e. Int |grad x_h|^2. */
+    double
+    stiffness_product(const dealii::TrilinosWrappers::MPI::Vector &x) const;
+
+    /** sqrt(r^T M^-1 r): the L2 norm of the function that r represents. */
+    double
+    dual_norm(const dealii::TrilinosWrappers::MPI::Vector &r) const;
+  };
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,31 @@
+#ifndef phasefield_problems_willmore_problem_h
+#define phasefield_problems_willmore_problem_h
+
+#include <phasefield/core/parameters.h>
+#include <phasefield/problems/phase_field_problem.h>
+
+namespace PhaseField
+{
+  /**
+   * The problem of willmore_flow: Willmore flow (Willmore weight 1, no
+   * area term) of the `Geometry` shape on a narrow-band mesh of [0,1]^dim
+   * with the scheme of `Time stepping / Scheme`. What it adds to
+   * PhaseFieldProblem is the exact evolution where one is known (circles
+   * grow as r(t) = (2t + r0^4)^(1/4), spheres are stationary) for the
+   * `l2_error` column.
+   */
+  template <int dim>
+  class WillmoreProblem : public PhaseFieldProblem<dim>
+  {
+  public:
+    using BlockVector = typename PhaseFieldProblem<dim>::BlockVector;
+
+    explicit WillmoreProblem(const WillmoreParameters &parameters);
+
+    /** ||U - tanh(d_exact(t)/eps)||_L2, NaN without an exact solution. */
+    double
+    l2_error(const BlockVector &state, const double time) const override;
+  };
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,453 @@
+#ifndef phasefield_schemes_nested_scheme_h
+#define phasefield_schemes_nested_scheme_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <memory>
+#include <phasefield/core/constants.h>
+#include <phasefield/core/parameters.h>
+#include <phasefield/mesh/discretization.h>
+#include <phasefield/schemes/double_well.h>
+#include <phasefield/schemes/outer_energy.h>
+#include <phasefield/schemes/time_stepping_scheme.h>
+#include <phasefield/solvers/linear_solver.h>
+#include <phasefield/solvers/nonlinear_system.h>
+
+/**
+ * The nested variational time discretization of Willmore flow (thesis
+ * chapter 3) for Q1 elements with lumped mass: one step is the saddle
+ * point of the Lagrangian (3.19) of the outer problem (3.18a) constrained
+ * by the inner (Allen-Cahn) problem (3.18b), with the discrete energies
+ * (3.17a), (3.17b) (Definition 3.13), solved by Newton's method.
+ */
+namespace PhaseField
+{
+  /** Block indices of the three fields. */
+  namespace Field
+  {
+    constexpr unsigned int U = 0;
+    constexpr unsigned int V = 1;
+    constexpr unsigned int P = 2;
+  } // namespace Field
+
+  /**
+   * The coefficients of one nested step. With `double_well = false` and
+   * epsilon = 1 the scheme is the biharmonic model problem of thesis
+   * chapter 4.
+   */
+  struct NestedCoefficients
+  {
+    double      epsilon;
+    double      tau;
+    double      inner_tau;
+    bool        double_well = true;
+    OuterEnergy outer;
+  };
+
+  /**
+   * The one definition of the nodal weights of the nested step's residual
+   * and Jacobian (see NestedStep), computed once from NestedCoefficients:
+   * every block of J is M[weight] + factor L with a weight and a factor
+   * from here.
+   */
+  struct NestedWeights
+  {
+    explicit NestedWeights(const NestedCoefficients &coefficients)
+      : a(coefficients.outer.willmore_weight *
+          (coefficients.tau /
+           (coefficients.inner_tau * coefficients.inner_tau)))
+      , c(coefficients.double_well ?
+            coefficients.inner_tau /
+              (2 * coefficients.epsilon * coefficients.epsilon) :
+            0.)
+      , inner_tau(coefficients.inner_tau)
+      , area_factor(coefficients.tau * coefficients.outer.area_weight)
+      , area_potential_factor(1. /
+                              (2 * coefficients.epsilon * coefficients.epsilon))
+    {}
+
+    /** a = mu tau / ttau^2: weight of M(V-U) in R_U and R_V. */
+    const double a;
+    /** c = ttau/(2 eps^2): weight of M Psi'(V) in R_P (0 without Psi). */
+    const double c;
+    /** ttau: factor of L in K(V) (the VP and PV blocks). */
+    const double inner_tau;
+    /** tau eta: factor of the area term in R_U and of L in J_UU. */
+    const double area_factor;
+    /** 1/(2 eps^2): weight of M Psi'(U) in the area term. */
+    const double area_potential_factor;
+
+    /**
+     * Nodal weight of K(V) - shift M = M[k] + ttau L, the Hessian of the
+     * inner energy: 1 - shift + c Psi''(v).
+     */
+    double
+    k(const double v, const double shift = 0) const
+    {
+      return 1 - shift + c * DoubleWell::d2_psi(v);
+    }
+    /** Nodal weight of E = M[e] in J_VV = a M + E: c Psi'''(v) p. */
+    double
+    e(const double v, const double p) const
+    {
+      return c * DoubleWell::d3_psi(v) * p;
+    }
+    /**
+     * Nodal weight of the mass part of J_UU = M[uu] + tau eta L:
+     * 1 + a + shift + tau eta Psi''(u)/(2 eps^2), with a Levenberg-Marquardt
+     * @p shift.
+     */
+    double
+    uu(const double u, const double shift = 0) const
+    {
+      return (1 + a + shift) +
+             area_factor * area_potential_factor * DoubleWell::d2_psi(u);
+    }
+  };
+
+  /**
+   * One step of the nested scheme from U^k: the saddle-point system of
+   * thesis (3.19) in Z = (U, V, P), divided by 2 eps,
+   *
+   *   R_U = M(U-U^k) - a M(V-U) - M P   [+ tau eta (L U + M Psi'(U)/(2 eps^2))
+   *                                      - (tau/eps) F]
+   *   R_V = a M(V-U) + K(V) P,   K(V) = M + c M[Psi''(V)] + ttau L
+   *   R_P = M(V-U) + c M Psi'(V) + ttau L V
+   *
+   * with a = mu tau/ttau^2, c = ttau/(2 eps^2), and the exact, symmetric
+   * Jacobian
+   *
+   *   J = [ (1+a)M [+ tau eta (L + M[Psi''(U)]/(2 eps^2))]  -aM    -M   ]
+   *       [ -aM                                    aM + E   K(V) ]
+   *       [ -M                                     K(V)     0    ]
+   *
+   * with E = c M[Psi'''(V) P]; all nodal weights come from
+   * NestedCoefficients. Without restoration terms M is the whole UU block
+   * and J dZ = -R is solved exactly by elimination: dV solves
+   *   S dV = -R_V + a R_P - K M^-1 ((1+a) R_P + R_U),
+   *   S = b M + E + (1+a) Khat M^-1 Khat,  Khat = K - b M, b = a/(1+a),
+   * then dU = M^-1 (K dV + R_P) and
+   * dP = M^-1 (((1+a) K - a M) dV + (1+a) R_P + R_U).
+   *
+   * With the area term of edge restoration (thesis (5.7)) and U held
+   * fixed at the DoFs of OuterEnergy::fixed_u (thesis Definition 5.1:
+   * the U-row of R is zero there, the U-row and U-column of J are those of
+   * the identity), the UU block is neither diagonal nor eliminable row by
+   * row; J is then assembled as one sparse matrix (unknowns interleaved,
+   * (U_i, V_i, P_i)) and solved by the direct solver (2D).
+   *
+   * As a MinimizationProblem the step is the minimisation of the outer
+   * energy over U, with V the inner minimiser and P its adjoint
+   * (project_and_energy()); R_U is then its gradient.
+   */
+  template <int dim>
+  class NestedStep : public MinimizationProblem
+  {
+  public:
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    /**
+     * The two matrices of the reduced Newton system at a state: K(V) and
+     * the Schur complement S, assembled (direct solver) or in product
+     * form (iterative solver). For the biharmonic model (no double well)
+     * they are independent of the state.
+     */
+    struct ReducedMatrices
+    {
+      dealii::TrilinosWrappers::SparseMatrix k;
+      /** S assembled (only for the direct solver). */
+      dealii::TrilinosWrappers::SparseMatrix s;
+      /** Product form of S (iterative solver): Khat, diag b M + E, G. */
+      dealii::TrilinosWrappers::SparseMatrix k_hat;
+      Vector                                 diagonal;
+      dealii::TrilinosWrappers::SparseMatrix g;
+    };
+
+    /**
+     * The step from @p old_u (which must outlive this object). If
+     * @p constant_matrices is given and the Jacobian does not depend on the
+     * state (no double well, no restoration terms), the reduced matrices
+     * are built once into it and reused; the caller keeps it per mesh.
+     */
+    NestedStep(const Discretization<dim> &discretization,
+               const NestedCoefficients  &coefficients,
+               const Vector              &old_u,
+               ReducedMatrices           *constant_matrices = nullptr);
+
+    /** @name NonlinearSystem */
+    /** @{ */
+    void
+    residual(const BlockVector &z, BlockVector &r) const override;
+    /** sqrt(R^T M^-1 R) summed over the three blocks. */
+    double
+    residual_norm(const BlockVector &r) const override;
+    /**
+     * Size of the terms of R(z) in L2: ||U|| + a ||V-U|| + ||P||, the
+     * reference for an absolute Newton tolerance.
+     */
+    double
+    term_scale(const BlockVector &z) const override;
+    unsigned int
+    solve_jacobian(const BlockVector &z,
+                   const BlockVector &r,
+                   BlockVector       &dz,
+                   LinearSolver      &solver) override;
+    void
+    distribute_constraints(BlockVector &z) const override;
+    /** @} */
+
+    /** @name MinimizationProblem (edge restoration) */
+    /** @{ */
+    /**
+     * V and P re-solved for the U of @p z (solve_inner_problem() to
+     * round-off), then the outer energy there.
+     */
+    double
+    project_and_energy(BlockVector &z) override;
+    /** The 3-field solve with mu M added to the UU block. */
+    unsigned int
+    solve_shifted_jacobian(const BlockVector &z,
+                           const BlockVector &r,
+                           BlockVector       &dz,
+                           LinearSolver      &solver,
+                           const double       shift) override;
+    /** @} */
+
+    /**
+     * y = J(Z) x: the Jacobian (with @p shift M added to the UU block)
+     * applied to a vector (used by tests).
+     */
+    void
+    jacobian_vmult(const BlockVector &z,
+                   const BlockVector &x,
+                   BlockVector       &y,
+                   const double       shift = 0) const;
+
+    /**
+     * The outer energy at the state @p z, divided by 2 eps like the
+     * residual:
+     *   (1/2)|U-U^k|_M^2 + (a/2)|V-U|_M^2 + tau eta a_eps[U] / eps.
+     * With V = V(U) the inner miniser (solve_inner_problem()) this is a
+     * function of U alone whose gradient is R_U.
+     */
+    double
+    outer_energy(const BlockVector &z) const;
+
+    /**
+     * Given U in @p z, solve the inner problem R_P(U, V) = 0 for V by
+     * Newton's method (newton_solve() on InnerProblem) starting from the V
+     * in @p z, until ||R_P||_{M^-1} <= @p tolerance, and then the adjoint
+     * equation R_V(U, V, P) = 0 for P. Afterwards R_U is the gradient of
+     * outer_energy() with respect to U. Throws if Newton fails. Returns
+     * the Newton iterations.
+     */
+    unsigned int
+    solve_inner_problem(BlockVector  &z,
+                        LinearSolver &solver,
+                        const double  tolerance) const;
+
+    /**
+     * Algorithm 3.1: given U in @p z, V from R_P(U, V) = 0 (Newton from
+     * V = U, to @p tolerance relative to the residual there) and then P
+     * from R_V(U, V, P) = 0. Returns the Newton iterations.
+     */
+    unsigned int
+    initialize_v_and_p(BlockVector  &z,
+                       LinearSolver &solver,
+                       const double  tolerance) const;
+
+    /**
+     * The solver of the inner problems of project_and_energy(): a direct
+     * solver of its own, so that it keeps the factorisation of K(V) while
+     * the Newton solver factorises the 3-field matrix.
+     */
+    void
+    set_inner_solver(LinearSolver &solver)
+    {
+      inner_solver = &solver;
+    }
+
+    const NestedCoefficients &
+    coefficients() const
+    {
+      return coeff;
+    }
+
+    /**
+     * Tolerance of ||R_P||_{M^-1} in the inner problems of
+     * project_and_energy(): round-off is about 1e-15; an inexact V changes
+     * the outer energy to first order and R_U by a = tau/ttau^2 times it.
+     */
+    static constexpr double inner_tolerance = Constants::roundoff;
+
+  private:
+    class InnerProblem;
+
+    /** Build K(V) and S at the state @p z. */
+    void
+    build_reduced_matrices(const BlockVector     &z,
+                           ReducedMatrices       &matrices,
+                           const LinearSolverType type) const;
+
+    /** J dZ = -R by elimination with the matrices of the state. */
+    unsigned int
+    solve_reduced_system(const ReducedMatrices &matrices,
+                         const BlockVector     &r,
+                         BlockVector           &dz,
+                         LinearSolver          &solver) const;
+
+    /**
+     * The 3-field Jacobian (UU block shifted by @p shift M) as one sparse
+     * matrix J' = S J(Z) S, S = diag(1, 1, a), unknown (field b, DoF i) at
+     * row 3 i + b, with the rows and columns of fixed and hanging-node
+     * constrained U values replaced by those of the identity. Without the
+     * scaling of P the entries differ by the factor a = tau/ttau^2 (up to
+     * 10^7) and the pivoting of the sparse LU fills in badly.
+     */
+    void
+    assemble_full_jacobian(const BlockVector                      &z,
+                           const double                            shift,
+                           dealii::TrilinosWrappers::SparseMatrix &j) const;
+
+    /** The sparsity pattern of assemble_full_jacobian() in @p j. */
+    void
+    reinit_full_jacobian(dealii::TrilinosWrappers::SparseMatrix &j) const;
+
+    /** J dZ = -R with the assembled 3-field Jacobian (shifted by shift M). */
+    unsigned int
+    solve_full_system(const BlockVector &z,
+                      const BlockVector &r,
+                      BlockVector       &dz,
+                      LinearSolver      &solver,
+                      const double       shift) const;
+
+    /** Is the U value at locally owned index @p i held fixed? */
+    bool
+    u_is_fixed(const unsigned int i) const;
+
+    /** r = R_P(U, V) = M(V-U) + c M Psi'(V) + ttau L V. */
+    void
+    inner_residual(const Vector &u, const Vector &v, Vector &r) const;
+
+    /** The nodal weights k_weight(V, shift) of K(V) - shift M. */
+    Vector
+    k_weights(const Vector &v, const double shift) const;
+
+    /** K(V) - shift M = M[k_weight] + ttau L. */
+    void
+    build_k(const Vector                           &v,
+            const double                            shift,
+            dealii::TrilinosWrappers::SparseMatrix &k) const;
+
+    /**
+     * The preconditioner of the iterative solver uses
+     * G = gamma M + sqrt((1+a)/b) Khat with this gamma. Khat is indefinite
+     * near the interface (Psi'' < 0 there), and gamma = 1 can make G nearly
+     * singular; a larger gamma keeps G definite at the price of a weaker
+     * approximation of S. Measured on the 3D cube at level 6 (first step,
+     * 10 Newton iterations, 2 ranks): 398 / 363 / 331 / 392 CG iterations
+     * in all for gamma = 1 / 2 / 4 / 8.
+     */
+    static constexpr double schur_mass_shift = 4;
+
+    const Discretization<dim>  &discretization;
+    const LumpedOperators<dim> &ops;
+    const NestedCoefficients    coeff;
+    const NestedWeights         weights;
+    const Vector               &old_u;
+    ReducedMatrices            *constant_matrices;
+    /** The solver of project_and_energy()'s inner problems. */
+    LinearSolver *inner_solver = nullptr;
+  };
+
+  /**
+   * The nested scheme as a TimeSteppingScheme: state (U, V, P),
+   * initialisation by Algorithm 3.1, one NestedStep per time step solved
+   * by newton_solve() (or, with restoration terms, by
+   * minimizing_newton_solve(), so that the outer energy decreases at
+   * every iteration), the energy law of thesis Cor. 3.3.
+   */
+  template <int dim>
+  class NestedScheme : public TimeSteppingScheme<dim>
+  {
+  public:
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    NestedScheme(const SchemeSettings             &settings,
+                 const Discretization<dim>        &discretization,
+                 const dealii::ConditionalOStream &pcout);
+
+    std::string
+    name() const override;
+    std::vector<std::string>
+    field_names() const override;
+    std::string
+    linear_solver_description() const override;
+    std::vector<std::string>
+    warnings() const override;
+    void
+    initialize(BlockVector &state, const double tau) override;
+    void
+    prepare_step(BlockVector &state,
+                 const double state_tau,
+                 const double tau) const override;
+    StepReport
+    advance(const BlockVector &old_state,
+            BlockVector       &state,
+            const double       tau) override;
+    void
+    after_remesh(BlockVector &state, const double tau) override;
+    /** Willmore energy (3/4) (1/2) eps Int ((U-V)/ttau)^2 and area. */
+    Energies
+    energies(const BlockVector &state) const override;
+    unsigned int
+    n_factorizations() const override
+    {
+      return linear_solver->n_factorizations();
+    }
+    /** (U - V) / inner tau. */
+    void
+    curvature(const BlockVector &state, Vector &curvature) const override;
+    bool
+    has_energy_law() const override
+    {
+      return true;
+    }
+    double
+    energy_law_energy(const BlockVector &state) const override;
+    /**
+     * eps ||U - U^k||^2_M / (2 tau) in geometric units: by thesis
+     * Cor. 3.3, on a fixed mesh energy_law_energy() after a step plus this
+     * is at most energy_law_energy() before it, if the step found the
+     * minimiser.
+     */
+    double
+    dissipation(const BlockVector &old_state,
+                const BlockVector &state,
+                const double       tau) const override;
+
+    /** The coefficients of a step of size @p tau. */
+    NestedCoefficients
+    coefficients(const double tau) const;
+
+  private:
+    /** A direct solver with the tolerances of `Linear solver`. */
+    std::unique_ptr<LinearSolver>
+    make_direct_solver() const;
+
+    const SchemeSettings              settings;
+    const Discretization<dim>        &discretization;
+    const dealii::ConditionalOStream &pcout;
+    std::unique_ptr<LinearSolver>     linear_solver;
+    /** Reduced matrices of the biharmonic model, kept per mesh. */
+    std::unique_ptr<typename NestedStep<dim>::ReducedMatrices>
+      constant_matrices;
+  };
+} // namespace PhaseField
+
+#endif

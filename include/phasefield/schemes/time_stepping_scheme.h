@@ -1,0 +1,177 @@
+#ifndef phasefield_schemes_time_stepping_scheme_h
+#define phasefield_schemes_time_stepping_scheme_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <memory>
+#include <phasefield/core/parameters.h>
+#include <phasefield/mesh/discretization.h>
+#include <phasefield/schemes/energies.h>
+#include <phasefield/schemes/outer_energy.h>
+#include <phasefield/solvers/nonlinear_system.h>
+#include <string>
+#include <vector>
+
+namespace PhaseField
+{
+  /**
+   * A time discretisation of a phase-field gradient flow, as the time loop
+   * and the problems see it. The state of a scheme is a block vector of
+   * fields in the scalar Q1 space of a Discretization, the phase field U
+   * first: (U, V, P) for the nested scheme, (U, F) for the semi-implicit
+   * one. Implementations: NestedScheme (thesis chapter 3),
+   * SemiImplicitScheme (thesis section 5.2); create_time_stepping_scheme()
+   * is the only place that chooses between them.
+   */
+  template <int dim>
+  class TimeSteppingScheme
+  {
+  public:
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    virtual ~TimeSteppingScheme() = default;
+
+    /** The value of `Time stepping / Scheme`, e.g. "nested". */
+    virtual std::string
+    name() const = 0;
+
+    /** The names of the fields (blocks of the state), U first. */
+    virtual std::vector<std::string>
+    field_names() const = 0;
+
+    /** Number of fields. */
+    unsigned int
+    n_fields() const
+    {
+      return field_names().size();
+    }
+
+    /** The linear solver, in words, for the log. */
+    virtual std::string
+    linear_solver_description() const = 0;
+
+    /** Warnings about the parameters (empty if none), for the log. */
+    virtual std::vector<std::string>
+    warnings() const
+    {
+      return {};
+    }
+
+    /**
+     * Given U in block 0 of @p state, set the other fields (the nested
+     * scheme's Algorithm 3.1 for the step size @p tau; F = f(U)).
+     */
+    virtual void
+    initialize(BlockVector &state, const double tau) = 0;
+
+    /**
+     * Before a (re)try of a step of size @p tau from a state that belongs
+     * to steps of size @p state_tau: adjust the state (the nested scheme
+     * scales P, which is proportional to tau).
+     */
+    virtual void
+    prepare_step(BlockVector &state,
+                 const double state_tau,
+                 const double tau) const
+    {
+      (void)state;
+      (void)state_tau;
+      (void)tau;
+    }
+
+    /**
+     * One time step of size @p tau from @p old_state: @p state holds the
+     * start of the iteration and on return the new state (or, on failure,
+     * the last iterate).
+     */
+    virtual StepReport
+    advance(const BlockVector &old_state,
+            BlockVector       &state,
+            const double       tau) = 0;
+
+    /**
+     * After re-meshing (fields transferred, constraints distributed):
+     * forget matrices and factorisations and restore what the transfer
+     * does not keep (the semi-implicit F = f(U); with restoration terms
+     * the nested V, P for the U of the step size @p tau).
+     */
+    virtual void
+    after_remesh(BlockVector &state, const double tau) = 0;
+
+    /** Energies of @p state in geometric units. */
+    virtual Energies
+    energies(const BlockVector &state) const = 0;
+
+    /**
+     * Preconditioner set-ups of the Newton solves so far: LU
+     * factorisations (direct) or multigrid hierarchies (iterative).
+     */
+    virtual unsigned int
+    n_factorizations() const = 0;
+
+    /** The mean curvature field of @p state (for the output). */
+    virtual void
+    curvature(const BlockVector &state, Vector &curvature) const = 0;
+
+    /**
+     * Does every exact step decrease energy_law_energy() by at least
+     * dissipation() (thesis Cor. 3.3)? The time loop checks it then.
+     */
+    virtual bool
+    has_energy_law() const
+    {
+      return false;
+    }
+
+    /** mu W + eta A of @p state (weights of the outer energy). */
+    virtual double
+    energy_law_energy(const BlockVector &state) const
+    {
+      (void)state;
+      return 0;
+    }
+
+    /** The dissipation of the step from @p old_state to @p state. */
+    virtual double
+    dissipation(const BlockVector &old_state,
+                const BlockVector &state,
+                const double       tau) const
+    {
+      (void)old_state;
+      (void)state;
+      (void)tau;
+      return 0;
+    }
+  };
+
+  /** What create_time_stepping_scheme() builds a scheme from. */
+  struct SchemeSettings
+  {
+    Scheme scheme = Scheme::nested;
+    /** Epsilon (1 for the biharmonic model). */
+    double epsilon   = 1;
+    double inner_tau = 1;
+    /** false: the biharmonic model problem (no Psi terms). */
+    bool                   double_well = true;
+    OuterEnergy            outer_energy;
+    NewtonParameters       newton;
+    LinearSolverParameters linear_solver;
+    bool                   verbose = false;
+  };
+
+  /**
+   * The scheme @p settings.scheme on @p discretization, which must outlive
+   * it. Throws InputError for combinations the schemes do not offer
+   * (restoration terms or the biharmonic model with the semi-implicit
+   * scheme).
+   */
+  template <int dim>
+  std::unique_ptr<TimeSteppingScheme<dim>>
+  create_time_stepping_scheme(const SchemeSettings             &settings,
+                              const Discretization<dim>        &discretization,
+                              const dealii::ConditionalOStream &pcout);
+} // namespace PhaseField
+
+#endif

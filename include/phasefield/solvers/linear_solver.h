@@ -1,0 +1,157 @@
+#ifndef phasefield_solvers_linear_solver_h
+#define phasefield_solvers_linear_solver_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <memory>
+#include <phasefield/core/parameters.h>
+#include <phasefield/solvers/direct_factorization.h>
+
+namespace PhaseField
+{
+  /**
+   * The linear solver of the Newton systems of all schemes (the reduced
+   * systems of NestedScheme and SemiImplicitScheme, the inner problem's
+   * K(V), the 3-field matrix of edge restoration).
+   *
+   * Direct: GMRES preconditioned with a sparse LU factorisation (MUMPS
+   * through Trilinos Amesos) of an earlier S. The factorisation is
+   * computed at the first solve and kept while GMRES needs at most
+   * `refactorization_threshold` iterations, so the first Newton
+   * iteration after a factorisation is an exact solve and later ones (or
+   * later time steps on the same mesh) cost a few matrix-vector products.
+   * Call reset() when the mesh changes.
+   *
+   * Iterative: CG (GMRES for a non-symmetric matrix) with algebraic
+   * multigrid (Trilinos ML), memory linear in the unknowns. The nested
+   * scheme's S is never assembled in this case: solve_product_form()
+   * applies it as a product of second-order matrices and preconditions it
+   * with multigrid cycles on a second-order matrix.
+   */
+  class LinearSolver
+  {
+  public:
+    LinearSolver(const LinearSolverType type,
+                 const double           relative_tolerance,
+                 const unsigned int     max_iterations,
+                 const bool             symmetric                 = true,
+                 const unsigned int     refactorization_threshold = 8);
+    ~LinearSolver();
+
+    /** `automatic`: direct (MUMPS) in 2D, iterative in 3D. */
+    static LinearSolverType
+    resolve_type(const LinearSolverType type, const int dim)
+    {
+      if (type != LinearSolverType::automatic)
+        return type;
+      return dim == 2 ? LinearSolverType::direct : LinearSolverType::iterative;
+    }
+
+    /**
+     * Factorise @p matrix now (direct type): with set_constant_matrix(),
+     * every following solve() applies this factorisation once.
+     */
+    void
+    factorize(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+
+    /**
+     * Solve; returns the number of Krylov iterations (1 when a fresh
+     * factorisation was applied once).
+     */
+    unsigned int
+    solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+          dealii::TrilinosWrappers::MPI::Vector        &solution,
+          const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+
+    /**
+     * Solve S x = r for S = diag(d) + w Khat M^-1 Khat given in product
+     * form (never assembled: two sparse matrix-vector products with the
+     * second-order matrix Khat per application), with CG preconditioned by
+     * G^-1 M G^-1 for a second-order matrix G given by the caller, each
+     * G^-1 being one algebraic multigrid cycle. With d = beta M and
+     * G = M + sqrt(w/beta) Khat, beta G M^-1 G = S + 2 sqrt(w beta) Khat,
+     * and for positive semi-definite Khat the preconditioned matrix has
+     * its spectrum in [1/2, 1] (the Schur complement preconditioner of
+     * Boyanova, Do-Quang and Neytcheva for Cahn-Hilliard systems). The
+     * multigrid hierarchy is built anew at every call (one "factorization"
+     * in n_factorizations()). Returns the CG iterations.
+     */
+    unsigned int
+    solve_product_form(
+      const dealii::TrilinosWrappers::SparseMatrix &k_hat,
+      const double                                  w,
+      const dealii::TrilinosWrappers::MPI::Vector  &d,
+      const dealii::TrilinosWrappers::SparseMatrix &g,
+      const dealii::TrilinosWrappers::MPI::Vector  &mass,
+      const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass,
+      dealii::TrilinosWrappers::MPI::Vector        &solution,
+      const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+
+    /**
+     * Relative tolerance of the next solves (an inexact Newton method
+     * sets it per iteration); never tighter than the one given to the
+     * constructor.
+     */
+    void
+    set_tolerance(const double relative_tolerance);
+
+    /**
+     * Factorise indefinite matrices (the 3-field Newton matrix of edge
+     * restoration): MUMPS gets @p percent per cent extra workspace for
+     * delayed pivots. 0 (the default): the matrices are definite.
+     */
+    void
+    set_pivoting_workspace(const unsigned int percent)
+    {
+      pivoting_workspace_percent = percent;
+    }
+
+    /** Forget the stored factorisation (e.g. after re-meshing). */
+    void
+    reset();
+
+    /**
+     * Declare whether every following solve() is with the matrix of the
+     * stored factorisation (a linear problem whose matrix is constant on
+     * a mesh). If so, solve() applies the factorisation once instead of
+     * running GMRES with it (the first solve still factorises). Only
+     * meaningful for the direct type.
+     */
+    void
+    set_constant_matrix(const bool constant)
+    {
+      constant_matrix = constant;
+    }
+
+    /**
+     * Number of preconditioner set-ups so far: LU factorisations (direct)
+     * or multigrid hierarchies of solve_product_form() (iterative).
+     */
+    unsigned int
+    n_factorizations() const
+    {
+      return factorization_count;
+    }
+
+    LinearSolverType
+    type() const
+    {
+      return solver_type;
+    }
+
+  private:
+    const LinearSolverType               solver_type;
+    const double                         relative_tolerance;
+    const unsigned int                   max_iterations;
+    const bool                           symmetric;
+    const unsigned int                   refactorization_threshold;
+    double                               tolerance;
+    std::unique_ptr<DirectFactorization> factorization;
+    unsigned int                         last_iterations            = 0;
+    unsigned int                         factorization_count        = 0;
+    bool                                 constant_matrix            = false;
+    unsigned int                         pivoting_workspace_percent = 0;
+  };
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,155 @@
+#ifndef phasefield_solvers_nonlinear_system_h
+#define phasefield_solvers_nonlinear_system_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/core/parameters.h>
+#include <phasefield/solvers/linear_solver.h>
+
+/**
+ * What the nonlinear solvers see of a problem: interfaces, no physics. A
+ * time-stepping scheme (or the inner problem of one, or a linear model
+ * problem) implements NonlinearSystem for newton_solve(); a problem that
+ * is the minimisation of an energy under a constraint also implements
+ * MinimizationProblem for minimizing_newton_solve().
+ */
+namespace PhaseField
+{
+  /** What one solve of a nonlinear system did. */
+  struct StepReport
+  {
+    bool         converged             = false;
+    unsigned int newton_iterations     = 0;
+    unsigned int linear_iterations     = 0;
+    double       initial_residual_norm = 0;
+    double       final_residual_norm   = 0;
+  };
+
+  /** A nonlinear system R(z) = 0 for a block vector z. */
+  class NonlinearSystem
+  {
+  public:
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    virtual ~NonlinearSystem() = default;
+
+    /** @p r = R(@p z). */
+    virtual void
+    residual(const BlockVector &z, BlockVector &r) const = 0;
+
+    /** Norm of a residual (the L2 norm of the functions it represents). */
+    virtual double
+    residual_norm(const BlockVector &r) const = 0;
+
+    /**
+     * Size of the individual terms of R(z), so that an absolute tolerance
+     * is relative to the round-off of the residual evaluation.
+     */
+    virtual double
+    term_scale(const BlockVector &z) const = 0;
+
+    /**
+     * Solve J(z) dz = -r with @p solver; returns the number of Krylov
+     * iterations.
+     */
+    virtual unsigned int
+    solve_jacobian(const BlockVector &z,
+                   const BlockVector &r,
+                   BlockVector       &dz,
+                   LinearSolver      &solver) = 0;
+
+    /** Make a trial state conforming (hanging nodes, boundary values). */
+    virtual void
+    distribute_constraints(BlockVector &z) const = 0;
+  };
+
+  /**
+   * The minimisation of an energy phi over the free fields of z, the other
+   * fields being determined by a constraint (edge restoration: the outer
+   * energy over U, with V the inner minimiser and P its adjoint). The
+   * residual of the free fields is the gradient of phi whenever the
+   * constraint holds.
+   */
+  class MinimizationProblem : public NonlinearSystem
+  {
+  public:
+    /**
+     * Re-solve the dependent fields of @p z for its free ones (the
+     * constraint) and return the energy phi there.
+     */
+    virtual double
+    project_and_energy(BlockVector &z) = 0;
+
+    /**
+     * solve_jacobian() with the Hessian of the free fields shifted by
+     * @p shift times the mass matrix (a Levenberg-Marquardt shift).
+     */
+    virtual unsigned int
+    solve_shifted_jacobian(const BlockVector &z,
+                           const BlockVector &r,
+                           BlockVector       &dz,
+                           LinearSolver      &solver,
+                           const double       shift) = 0;
+  };
+
+  /** How newton_solve() and minimizing_newton_solve() iterate and stop. */
+  struct NewtonControl
+  {
+    /** Stop when ||R|| <= relative_tolerance ||R_0|| ... */
+    double relative_tolerance = 0;
+    /** ... or ||R|| <= absolute_tolerance * term_scale(z). */
+    double       absolute_tolerance = 0;
+    unsigned int max_iterations     = 0;
+    /** Backtracking halvings of one update before giving up. */
+    unsigned int max_damping_steps = 0;
+    /** Once per solve a full update may raise ||R|| by this factor. */
+    double watchdog_factor = 1;
+    /**
+     * false: every full update is accepted (Newton's method for a convex
+     * problem from a start where the residual need not decrease).
+     */
+    bool line_search = true;
+    /**
+     * true: the first linear solve is loose and later ones just accurate
+     * enough for the target (inexact Newton); false: the solver's own
+     * tolerance throughout.
+     */
+    bool adapt_linear_tolerance = true;
+    /**
+     * If positive: also stop when ||R|| is below this level and has
+     * decreased by less than half in the last iteration (round-off).
+     */
+    double roundoff_level = 0;
+
+    NewtonControl() = default;
+    /** The control of `Subsection Newton`. */
+    explicit NewtonControl(const NewtonParameters &parameters);
+  };
+
+  namespace internal
+  {
+    /**
+     * The residual @p residual at @p z and its norm @p norm at the start of
+     * a Newton method; returns the residual norm at which it stops and sets
+     * report.converged if it is reached already.
+     */
+    double
+    start_newton(const NonlinearSystem                            &system,
+                 const dealii::TrilinosWrappers::MPI::BlockVector &z,
+                 dealii::TrilinosWrappers::MPI::BlockVector       &residual,
+                 const NewtonControl                              &control,
+                 const dealii::ConditionalOStream                 &pcout,
+                 const bool                                        verbose,
+                 double                                           &norm,
+                 StepReport                                       &report);
+
+    /** The message of a Newton method that ran out of iterations. */
+    void
+    print_newton_failure(const dealii::ConditionalOStream &pcout,
+                         const NewtonControl              &control,
+                         const double                      norm,
+                         const double                      target);
+  } // namespace internal
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,111 @@
+#ifndef phasefield_solvers_product_form_h
+#define phasefield_solvers_product_form_h
+
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+/**
+ * The pieces of the iterative solver of Schur complements in product form,
+ * S = diag(d) + w Khat M^-1 Khat with a sparse second-order matrix Khat
+ * and a diagonal M (LinearSolver::solve_product_form()): S is applied
+ * without being assembled, and preconditioned by G^-1 M G^-1 with one
+ * algebraic multigrid cycle for each G^-1.
+ */
+namespace PhaseField
+{
+  /**
+   * Settings of the algebraic multigrid cycles (Trilinos ML) of the
+   * iterative solvers: aggregation for a scalar second-order operator,
+   * three Chebyshev sweeps per level (measured on the 3D cube: two sweeps
+   * need twice the CG iterations, more than three do not pay).
+   */
+  dealii::TrilinosWrappers::PreconditionAMG::AdditionalData
+  multigrid_settings();
+
+  /**
+   * dst = A diag(@p diagonal) A src for a symmetric operator A, i.e. the
+   * symmetric product of A, a diagonal and A; @p tmp is scratch space.
+   */
+  template <typename Operator>
+  void
+  apply_symmetric_product(const Operator                              &a,
+                          const dealii::TrilinosWrappers::MPI::Vector &diagonal,
+                          dealii::TrilinosWrappers::MPI::Vector       &tmp,
+                          dealii::TrilinosWrappers::MPI::Vector       &dst,
+                          const dealii::TrilinosWrappers::MPI::Vector &src)
+  {
+    a.vmult(tmp, src);
+    tmp.scale(diagonal);
+    a.vmult(dst, tmp);
+  }
+
+
+
+  /** S = diag(d) + w Khat M^-1 Khat applied to a vector. */
+  class ProductFormMatrix
+  {
+  public:
+    ProductFormMatrix(const dealii::TrilinosWrappers::SparseMatrix &k_hat,
+                      const double                                  w,
+                      const dealii::TrilinosWrappers::MPI::Vector  &d,
+                      const dealii::TrilinosWrappers::MPI::Vector &inverse_mass)
+      : k_hat(k_hat)
+      , w(w)
+      , d(d)
+      , inverse_mass(inverse_mass)
+      , tmp(d)
+    {}
+
+    void
+    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src) const
+    {
+      apply_symmetric_product(k_hat, inverse_mass, tmp, dst, src);
+      dst *= w;
+      tmp = src;
+      tmp.scale(d);
+      dst += tmp;
+    }
+
+  private:
+    const dealii::TrilinosWrappers::SparseMatrix &k_hat;
+    const double                                  w;
+    const dealii::TrilinosWrappers::MPI::Vector  &d;
+    const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass;
+    mutable dealii::TrilinosWrappers::MPI::Vector tmp;
+  };
+
+
+
+  /**
+   * The preconditioner G^-1 M G^-1 of
+   * LinearSolver::solve_product_form(), with one multigrid cycle
+   * for each G^-1.
+   */
+  class SchurPreconditioner
+  {
+  public:
+    SchurPreconditioner(const dealii::TrilinosWrappers::SparseMatrix &g,
+                        const dealii::TrilinosWrappers::MPI::Vector  &mass)
+      : mass(mass)
+      , tmp(mass)
+    {
+      multigrid.initialize(g, multigrid_settings());
+    }
+
+    void
+    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src) const
+    {
+      apply_symmetric_product(multigrid, mass, tmp, dst, src);
+    }
+
+  private:
+    dealii::TrilinosWrappers::PreconditionAMG     multigrid;
+    const dealii::TrilinosWrappers::MPI::Vector  &mass;
+    mutable dealii::TrilinosWrappers::MPI::Vector tmp;
+  };
+} // namespace PhaseField
+
+#endif

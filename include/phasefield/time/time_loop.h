@@ -1,0 +1,182 @@
+#ifndef phasefield_time_time_loop_h
+#define phasefield_time_time_loop_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <limits>
+#include <phasefield/core/parameters.h>
+#include <phasefield/core/statistics.h>
+#include <phasefield/mesh/discretization.h>
+#include <phasefield/schemes/energies.h>
+#include <phasefield/schemes/time_stepping_scheme.h>
+#include <string>
+#include <vector>
+
+namespace PhaseField
+{
+  /**
+   * The time loop of every time-dependent program: steps of the sizes of
+   * ModelParameters::step_size() (ramp-up, then Tau), each retried with
+   * half the step if the scheme's solver fails, the check of the energy
+   * law (thesis Cor. 3.3) for schemes that have one, narrow-band
+   * re-meshing every `Mesh / Refinement interval` steps, a row of
+   * statistics.csv and a progress line per step, VTU output every
+   * `Output / VTU interval` steps. It never asks which scheme it runs.
+   *
+   * What a problem adds to the loop, it says through a TimeLoop::Client.
+   */
+  template <int dim>
+  class TimeLoop
+  {
+  public:
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    /** The problem's part of the loop; every function has a default. */
+    class Client
+    {
+    public:
+      virtual ~Client() = default;
+
+      /**
+       * One time step of size @p tau from @p old_state into @p state
+       * (which holds the start value). The default is one step of
+       * @p scheme; a split step (shape from contour) is several.
+       */
+      virtual StepReport
+      advance(TimeSteppingScheme<dim> &scheme,
+              const BlockVector       &old_state,
+              BlockVector             &state,
+              const double             tau)
+      {
+        return scheme.advance(old_state, state, tau);
+      }
+
+      /**
+       * After the fields were transferred to a new mesh, before the
+       * constraints are distributed and the scheme restores its fields
+       * (edge restoration: the fixed values on the new mesh).
+       */
+      virtual void
+      after_remesh(BlockVector &state)
+      {
+        (void)state;
+      }
+
+      /**
+       * ||U - U_exact(@p time)||_L2 where an exact evolution is known,
+       * NaN otherwise.
+       */
+      virtual double
+      l2_error(const BlockVector &state, const double time) const
+      {
+        (void)state;
+        (void)time;
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+
+      /** Names of the problem's own statistics.csv columns. */
+      virtual std::vector<std::string>
+      extra_columns() const
+      {
+        return {};
+      }
+
+      /** Values of extra_columns() at @p state with @p energies. */
+      virtual std::vector<double>
+      extra_values(const BlockVector &state, const Energies &energies) const
+      {
+        (void)state;
+        (void)energies;
+        return {};
+      }
+    };
+
+    /** The parameters the loop needs. */
+    struct Settings
+    {
+      /** Step sizes (ramp-up, Tau) and the number of steps. */
+      ModelParameters model;
+      unsigned int    max_step_halvings;
+      bool            adaptive;
+      unsigned int    refinement_interval;
+      unsigned int    vtu_interval;
+      bool            verbose;
+      std::string     output_directory;
+
+      /** The settings of the Willmore-flow parameters. */
+      static Settings
+      from(const WillmoreParameters &parameters);
+    };
+
+    TimeLoop(const Settings                   &settings,
+             Discretization<dim>              &discretization,
+             TimeSteppingScheme<dim>          &scheme,
+             Client                           &client,
+             const dealii::ConditionalOStream &pcout,
+             dealii::TimerOutput              &timer);
+
+    /**
+     * Run all steps from the initialised @p state (time 0, step 0 is
+     * recorded first). Throws if a step fails after all halvings; the
+     * statistics and output up to the previous step are then complete.
+     */
+    void
+    run(BlockVector &state);
+
+  private:
+    /**
+     * Step @p step from old_state into @p state with the step size
+     * @p tau, halved on failure (@p tau is then the size taken).
+     */
+    StepReport
+    advance_with_halving(const unsigned int step,
+                         BlockVector       &state,
+                         double            &tau);
+
+    /**
+     * Thesis Cor. 3.3: on a fixed mesh the minimiser of the outer energy
+     * satisfies E^{k+1} + dissipation <= E^k; warn if the step found
+     * another critical point.
+     */
+    void
+    check_energy_law(const unsigned int step,
+                     const BlockVector &state,
+                     const double       energy_before,
+                     const double       tau) const;
+
+    /** Adapt the mesh to the state and restore what the transfer broke. */
+    void
+    remesh(BlockVector &state);
+
+    /** Statistics row, progress line and (if due) output of step @p step. */
+    void
+    record(const unsigned int step,
+           const BlockVector &state,
+           const StepReport  &report,
+           const double       tau);
+
+    /** VTU output of the fields and the curvature. */
+    void
+    output_results(const unsigned int step, const BlockVector &state);
+
+    const Settings                    settings;
+    Discretization<dim>              &discretization;
+    TimeSteppingScheme<dim>          &scheme;
+    Client                           &client;
+    const dealii::ConditionalOStream &pcout;
+    dealii::TimerOutput              &timer;
+    dealii::Timer                     wall_timer;
+    std::unique_ptr<StatisticsFile>   statistics;
+
+    /** Total number of steps (ramp-up and Tau). */
+    const unsigned int n_steps;
+    double             time = 0;
+    /** The step size the multipliers of the current state belong to. */
+    double      state_tau;
+    BlockVector old_state;
+  };
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,513 @@
+#include <cmath>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/utilities.h>
+#include <fstream>
+#include <phasefield/core/parameters.h>
+#include <sstream>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  double
+  evaluate_expression_in_h(const std::string &expression,
+                           const double       h,
+                           const std::string &parameter_name)
+  {
+    double value = std::numeric_limits<double>::quiet_NaN();
+    try
+      {
+        FunctionParser<1> parser;
+        parser.initialize("h", expression, {});
+        value = parser.value(Point<1>(h));
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream info;
+        exc.print_info(info);
+        throw InputError(
+          "The parameter <" + parameter_name + "> has the value <" +
+          expression +
+          ">, which is not a valid expression in h: " + info.str());
+      }
+    if (!std::isfinite(value))
+      throw InputError(
+        "The parameter <" + parameter_name + "> = <" + expression +
+        "> evaluates to a non-finite number at h = " + std::to_string(h) + ".");
+    return value;
+  }
+
+
+
+  std::vector<double>
+  parse_double_list(const std::string &text, const std::string &parameter_name)
+  {
+    std::vector<double> values;
+    for (const std::string &entry : Utilities::split_string_list(text, ','))
+      {
+        std::size_t consumed = 0;
+        double      value    = 0;
+        try
+          {
+            value = std::stod(entry, &consumed);
+          }
+        catch (...)
+          {
+            consumed = 0;
+          }
+        if (consumed != entry.size() || entry.empty())
+          throw InputError("The parameter <" + parameter_name +
+                           "> must be a comma separated list of numbers, "
+                           "but contains <" +
+                           entry + ">.");
+        values.push_back(value);
+      }
+    return values;
+  }
+
+
+
+  void
+  GeometryParameters::declare_parameters(ParameterHandler  &prm,
+                                         const std::string &extra_shapes,
+                                         const std::string &extra_documentation)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry(
+      "Shape",
+      "two circles",
+      Patterns::Selection("circle|quarter circle|rectangle|two circles|cube|"
+                          "disc|sphere|ellipsoid|torus|function" +
+                          (extra_shapes.empty() ? "" : "|" + extra_shapes)),
+      "Initial shape. The phase field is tanh(signed distance / epsilon), "
+      "negative inside. circle/sphere: Center, Radius. quarter circle: "
+      "circle around Center (default: the origin). rectangle/cube: Center, "
+      "Sizes = edge lengths (one value: all edges equal). two circles: "
+      "Center, Second center, Radius. disc: Center, Sizes = diameter, "
+      "thickness (axis x_d). ellipsoid: Center, Sizes = semi-axes. torus: "
+      "Center, Sizes = R, r (axis x_d; in 2D an annulus). function: "
+      "Expression." +
+        (extra_documentation.empty() ? "" : " " + extra_documentation));
+    prm.declare_entry("Center",
+                      "",
+                      Patterns::Anything(),
+                      "Comma separated centre of the shape; empty: the centre "
+                      "of the unit cell, the origin for quarter circle and "
+                      "(0.35, 0.5) for two circles.");
+    prm.declare_entry("Second center",
+                      "",
+                      Patterns::Anything(),
+                      "Centre of the second circle of `two circles`; empty: "
+                      "(0.65, 0.5).");
+    prm.declare_entry("Radius",
+                      "0.13",
+                      Patterns::Double(0.),
+                      "Radius of circle, quarter circle, two circles, "
+                      "sphere.");
+    prm.declare_entry("Sizes",
+                      "0.4",
+                      Patterns::Anything(),
+                      "Comma separated sizes: rectangle/cube edge lengths, "
+                      "disc diameter and thickness, ellipsoid semi-axes, "
+                      "torus R and r.");
+    prm.declare_entry("Expression",
+                      "sqrt((x-0.5)^2+(y-0.5)^2)-0.25",
+                      Patterns::Anything(),
+                      "Signed distance (negative inside) as a muParser "
+                      "expression in x, y (and z in 3D); used by "
+                      "Shape = function.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    shape  = prm.get("Shape");
+    center = parse_double_list(prm.get("Center"), "Geometry / Center");
+    second_center =
+      parse_double_list(prm.get("Second center"), "Geometry / Second center");
+    radius     = prm.get_double("Radius");
+    sizes      = parse_double_list(prm.get("Sizes"), "Geometry / Sizes");
+    expression = prm.get("Expression");
+    prm.leave_subsection();
+    for (const double s : sizes)
+      if (!(s > 0))
+        throw InputError("All entries of <Geometry / Sizes> must be positive.");
+  }
+
+
+
+  double
+  MeshParameters::h() const
+  {
+    return std::ldexp(1.0, -static_cast<int>(finest_level));
+  }
+
+
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Finest level",
+                      "7",
+                      Patterns::Integer(1, 12),
+                      "Finest refinement level: h = 2^-level on [0,1]^d.");
+    prm.declare_entry("Coarsest level",
+                      "3",
+                      Patterns::Integer(0, 12),
+                      "Level of the cells far from the interface.");
+    prm.declare_entry("Adaptive",
+                      "true",
+                      Patterns::Bool(),
+                      "true: narrow band of finest cells around the "
+                      "interface; false: uniform mesh at Finest level.");
+    prm.declare_entry("Band width",
+                      "4",
+                      Patterns::Double(0.5),
+                      "Cells closer to the interface than Band width * "
+                      "epsilon (measured through the phase field, "
+                      "|U| < tanh(Band width)) are on the finest level.");
+    prm.declare_entry(
+      "Refinement interval",
+      "1",
+      Patterns::Integer(1),
+      "Adapt the mesh to the moving interface every this "
+      "many time steps (the band is wide enough for the interface to "
+      "move a few epsilon in between).");
+    prm.declare_entry(
+      "Stiffness quadrature",
+      "Gauss",
+      Patterns::Selection("Gauss|Gauss-Lobatto"),
+      "Quadrature of the stiffness matrix L. Gauss: the exact Q1 matrix "
+      "(9-point stencil on a uniform 2D mesh). Gauss-Lobatto: the vertices, "
+      "as for the lumped mass; on a uniform mesh the 5-point (3D: 7-point) "
+      "stencil, i.e. the P1 matrix on right triangles that the thesis uses, "
+      "with a smaller consistency error for the tanh profile when h is not "
+      "small against epsilon (thesis Fig. 5.1 / Table 5.1 files).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    finest_level         = prm.get_integer("Finest level");
+    coarsest_level       = prm.get_integer("Coarsest level");
+    adaptive             = prm.get_bool("Adaptive");
+    band_width           = prm.get_double("Band width");
+    refinement_interval  = prm.get_integer("Refinement interval");
+    stiffness_quadrature = prm.get("Stiffness quadrature") == "Gauss-Lobatto" ?
+                             StiffnessQuadrature::gauss_lobatto :
+                             StiffnessQuadrature::gauss;
+    prm.leave_subsection();
+    if (finest_level < coarsest_level)
+      throw InputError("<Mesh / Finest level> (" +
+                       std::to_string(finest_level) +
+                       ") must not be smaller than <Mesh / Coarsest level> (" +
+                       std::to_string(coarsest_level) + ").");
+  }
+
+
+
+  void
+  ModelParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Phase field");
+    prm.declare_entry("Epsilon",
+                      "4*h",
+                      Patterns::Anything(),
+                      "Interface width epsilon, an expression in the finest "
+                      "mesh size h, e.g. 4*h or 2^-6.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time stepping");
+    prm.declare_entry("Scheme",
+                      "nested",
+                      Patterns::Selection("nested|semi-implicit"),
+                      "nested: the nested variational time discretization "
+                      "(thesis chapter 3), Newton on the (U,V,P) "
+                      "saddle-point system. semi-implicit: the Du-Liu-Wang "
+                      "scheme (thesis section 5.2), Newton on (U,F) with "
+                      "F = eps Lap U + (2/eps) U(1-U^2); it does not use "
+                      "Inner tau.");
+    prm.declare_entry("Tau",
+                      "h^2",
+                      Patterns::Anything(),
+                      "Outer (Willmore) time step, an expression in h.");
+    prm.declare_entry("Inner tau",
+                      "h^2",
+                      Patterns::Anything(),
+                      "Inner (mean curvature) time step, an expression in h. "
+                      "Inner tau < epsilon^2/2 keeps the inner problem "
+                      "convex.");
+    prm.declare_entry("Number of steps",
+                      "15",
+                      Patterns::Integer(0),
+                      "Number of outer time steps.");
+    prm.declare_entry("Ramp-up steps",
+                      "0",
+                      Patterns::Integer(0),
+                      "Start-up from rough initial data: this many extra "
+                      "steps come first, of sizes Tau/2^n, ..., Tau/4, "
+                      "Tau/2 (n = Ramp-up steps), then Number of steps "
+                      "steps of size Tau. With Tau much larger than "
+                      "Inner tau^2 the first step from non-smooth data is "
+                      "a hard nonlinear problem whatever its size (halving "
+                      "Tau after a failure does not help); small first "
+                      "steps smooth the data so that Newton converges.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ModelParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Phase field");
+    epsilon_expression = prm.get("Epsilon");
+    prm.leave_subsection();
+    prm.enter_subsection("Time stepping");
+    scheme = prm.get("Scheme") == "semi-implicit" ? Scheme::semi_implicit :
+                                                    Scheme::nested;
+    tau_expression       = prm.get("Tau");
+    inner_tau_expression = prm.get("Inner tau");
+    n_steps              = prm.get_integer("Number of steps");
+    n_ramp_steps         = prm.get_integer("Ramp-up steps");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ModelParameters::evaluate(const double h)
+  {
+    epsilon =
+      evaluate_expression_in_h(epsilon_expression, h, "Phase field / Epsilon");
+    tau = evaluate_expression_in_h(tau_expression, h, "Time stepping / Tau");
+    inner_tau                 = evaluate_expression_in_h(inner_tau_expression,
+                                         h,
+                                         "Time stepping / Inner tau");
+    const auto check_positive = [](const double       value,
+                                   const std::string &name,
+                                   const std::string &expression) {
+      if (!(value > 0))
+        throw InputError("The parameter <" + name + "> = <" + expression +
+                         "> evaluates to " + std::to_string(value) +
+                         ", but must be positive.");
+    };
+    check_positive(epsilon, "Phase field / Epsilon", epsilon_expression);
+    check_positive(tau, "Time stepping / Tau", tau_expression);
+    check_positive(inner_tau,
+                   "Time stepping / Inner tau",
+                   inner_tau_expression);
+  }
+
+
+
+  void
+  NewtonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    prm.declare_entry("Tolerance",
+                      "1e-8",
+                      Patterns::Double(0.),
+                      "Relative tolerance: stop when the residual norm "
+                      "(the L2 norm of the residual functions, "
+                      "sqrt(R.M^-1 R)) has dropped by this factor in the "
+                      "current time step.");
+    prm.declare_entry("Absolute tolerance",
+                      "1e-12",
+                      Patterns::Double(0.),
+                      "Stop when sqrt(R.M^-1 R) is below this value.");
+    prm.declare_entry("Maximum iterations",
+                      "15",
+                      Patterns::Integer(1),
+                      "Newton iterations per time step before the step is "
+                      "retried with half the time step.");
+    prm.declare_entry("Maximum damping steps",
+                      "8",
+                      Patterns::Integer(0),
+                      "How often one Newton update may be halved when it "
+                      "does not reduce the residual.");
+    prm.declare_entry("Watchdog factor",
+                      "10",
+                      Patterns::Double(1.),
+                      "Once per time step, a full Newton update is accepted "
+                      "even if it increases the residual norm, by up to this "
+                      "factor (a non-monotone watchdog step); otherwise an "
+                      "update that does not decrease the norm is damped. "
+                      "1: always monotone.");
+    prm.declare_entry("Maximum step halvings",
+                      "4",
+                      Patterns::Integer(0),
+                      "How often a failed time step is retried with half "
+                      "the outer step before the program stops.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  NewtonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    relative_tolerance = prm.get_double("Tolerance");
+    absolute_tolerance = prm.get_double("Absolute tolerance");
+    max_iterations     = prm.get_integer("Maximum iterations");
+    max_damping_steps  = prm.get_integer("Maximum damping steps");
+    max_step_halvings  = prm.get_integer("Maximum step halvings");
+    watchdog_factor    = prm.get_double("Watchdog factor");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LinearSolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry(
+      "Type",
+      "auto",
+      Patterns::Selection("auto|direct|iterative"),
+      "How the reduced Newton system in V is solved. direct: MUMPS "
+      "(through Trilinos Amesos); iterative: CG preconditioned with "
+      "algebraic multigrid (memory linear in the unknowns); auto: direct in "
+      "2D, iterative in 3D.");
+    prm.declare_entry("Tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
+                      "Relative residual reduction of the iterative solver.");
+    prm.declare_entry("Maximum iterations",
+                      "1000",
+                      Patterns::Integer(1),
+                      "Iterations of the iterative solver.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LinearSolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    const std::string t = prm.get("Type");
+    type                = (t == "direct"    ? LinearSolverType::direct :
+                           t == "iterative" ? LinearSolverType::iterative :
+                                              LinearSolverType::automatic);
+    relative_tolerance  = prm.get_double("Tolerance");
+    max_iterations      = prm.get_integer("Maximum iterations");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("VTU interval",
+                      "5",
+                      Patterns::Integer(0),
+                      "Write VTU/PVTU output every this many steps (0: no "
+                      "VTU output). statistics.csv is always written.");
+    prm.declare_entry("Verbose",
+                      "false",
+                      Patterns::Bool(),
+                      "Print every Newton iteration and, for the nested "
+                      "scheme, the energy check of every step (energy + "
+                      "dissipation - energy before the step) and the "
+                      "energy change at every re-meshing.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    vtu_interval = prm.get_integer("VTU interval");
+    verbose      = prm.get_bool("Verbose");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  WillmoreParameters::declare_parameters(ParameterHandler  &prm,
+                                         const std::string &extra_shapes,
+                                         const std::string &extra_documentation)
+  {
+    declare_common_parameters(
+      prm, "Directory for statistics.csv and the VTU/PVD files.");
+    GeometryParameters::declare_parameters(prm,
+                                           extra_shapes,
+                                           extra_documentation);
+    MeshParameters::declare_parameters(prm);
+    ModelParameters::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    LinearSolverParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+  }
+
+
+
+  void
+  WillmoreParameters::parse_parameters(ParameterHandler &prm)
+  {
+    dimension        = prm.get_integer("Dimension");
+    output_directory = prm.get("Output directory");
+    geometry.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    model.parse_parameters(prm);
+    newton.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+    output.parse_parameters(prm);
+    model.evaluate(mesh.h());
+  }
+
+
+
+  void
+  read_parameter_file(ParameterHandler &prm, const std::string &filename)
+  {
+    std::ifstream file(filename);
+    if (!file)
+      throw InputError("Cannot open the parameter file <" + filename + ">.");
+    try
+      {
+        prm.parse_input(file, filename);
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream info;
+        exc.print_info(info);
+        throw InputError("Error in the parameter file <" + filename + ">:\n" +
+                         info.str());
+      }
+  }
+
+
+
+  void
+  declare_common_parameters(ParameterHandler  &prm,
+                            const std::string &output_description)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension, 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::Anything(),
+                      output_description);
+  }
+} // namespace PhaseField

@@ -1,0 +1,355 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <filesystem>
+#include <limits>
+#include <phasefield/geometry/images.h>
+#include <phasefield/geometry/shapes.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkPNGWriter.h>
+
+namespace PhaseField
+{
+  namespace Images
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /** Value standing for "no feature pixel" in the distance transform. */
+      constexpr double far_away = 1e20;
+
+      /**
+       * Squared distance transform of a sampled function in 1D
+       * (Felzenszwalb and Huttenlocher): d(q) = min_p (q-p)^2 + f(p).
+       */
+      std::vector<double>
+      distance_transform_1d(const std::vector<double> &f)
+      {
+        const int           n = f.size();
+        std::vector<double> d(n), z(n + 1);
+        std::vector<int>    v(n);
+        int                 k   = 0;
+        v[0]                    = 0;
+        z[0]                    = -std::numeric_limits<double>::infinity();
+        z[1]                    = std::numeric_limits<double>::infinity();
+        const auto intersection = [&](const int q, const int p) {
+          return ((f[q] + double(q) * q) - (f[p] + double(p) * p)) /
+                 (2. * q - 2. * p);
+        };
+        for (int q = 1; q < n; ++q)
+          {
+            double s = intersection(q, v[k]);
+            while (s <= z[k])
+              {
+                --k;
+                s = intersection(q, v[k]);
+              }
+            ++k;
+            v[k]     = q;
+            z[k]     = s;
+            z[k + 1] = std::numeric_limits<double>::infinity();
+          }
+        k = 0;
+        for (int q = 0; q < n; ++q)
+          {
+            while (z[k + 1] < q)
+              ++k;
+            d[q] = double(q - v[k]) * (q - v[k]) + f[v[k]];
+          }
+        return d;
+      }
+
+      /**
+       * Euclidean distance (in pixels) of every pixel to the nearest pixel
+       * with feature[i] == true.
+       */
+      std::vector<double>
+      distance_transform(const std::vector<bool> &feature,
+                         const unsigned int       nx,
+                         const unsigned int       ny)
+      {
+        std::vector<double> d(nx * ny);
+        for (unsigned int i = 0; i < nx * ny; ++i)
+          d[i] = feature[i] ? 0. : far_away;
+        std::vector<double> line;
+        for (unsigned int x = 0; x < nx; ++x)
+          {
+            line.resize(ny);
+            for (unsigned int y = 0; y < ny; ++y)
+              line[y] = d[y * nx + x];
+            line = distance_transform_1d(line);
+            for (unsigned int y = 0; y < ny; ++y)
+              d[y * nx + x] = line[y];
+          }
+        for (unsigned int y = 0; y < ny; ++y)
+          {
+            line.assign(d.begin() + y * nx, d.begin() + (y + 1) * nx);
+            line = distance_transform_1d(line);
+            std::copy(line.begin(), line.end(), d.begin() + y * nx);
+          }
+        for (double &x : d)
+          x = std::sqrt(x);
+        return d;
+      }
+
+      /** Two sizes from `Geometry / Sizes` for @p shape. */
+      std::vector<double>
+      two_sizes(const GeometryParameters &geometry, const std::string &shape)
+      {
+        if (geometry.sizes.size() != 2)
+          throw InputError("Shape <" + shape +
+                           "> needs <Geometry / Sizes> = length, width.");
+        return geometry.sizes;
+      }
+    } // namespace
+
+
+
+    double
+    box_distance(const Point<2>            &p,
+                 const std::vector<double> &lower,
+                 const std::vector<double> &upper)
+    {
+      const Point<2> center(0.5 * (lower[0] + upper[0]),
+                            0.5 * (lower[1] + upper[1]));
+      return Shapes::box_distance<2>(p - center,
+                                     {0.5 * (upper[0] - lower[0]),
+                                      0.5 * (upper[1] - lower[1])});
+    }
+
+
+
+    ImageDistance::ImageDistance(const std::string &filename,
+                                 const double       threshold)
+    {
+      if (!std::filesystem::is_regular_file(filename))
+        throw InputError("The image file <" + filename +
+                         "> given in <Geometry / Image file> does not exist.");
+      vtkNew<vtkPNGReader> reader;
+      if (reader->CanReadFile(filename.c_str()) == 0)
+        throw InputError("The image file <" + filename +
+                         "> given in <Geometry / Image file> is not a "
+                         "readable PNG image.");
+      reader->SetFileName(filename.c_str());
+      reader->Update();
+      vtkImageData *image = reader->GetOutput();
+      int           dims[3];
+      image->GetDimensions(dims);
+      if (dims[0] < 2 || dims[1] < 2)
+        throw InputError("The image file <" + filename +
+                         "> given in <Geometry / Image file> could not be "
+                         "read or has fewer than 2 x 2 pixels.");
+      nx                         = dims[0];
+      ny                         = dims[1];
+      pixel_size                 = 1. / std::max(nx, ny);
+      const int    n_components  = image->GetNumberOfScalarComponents();
+      const int    n_color       = std::min(n_components, 3);
+      const double maximum_value = image->GetScalarTypeMax();
+
+      // VTK's image rows run from the bottom, like y
+      std::vector<bool> inside(nx * ny), outside(nx * ny);
+      unsigned int      n_inside = 0;
+      for (unsigned int y = 0; y < ny; ++y)
+        for (unsigned int x = 0; x < nx; ++x)
+          {
+            double gray = 0;
+            for (int c = 0; c < n_color; ++c)
+              gray += image->GetScalarComponentAsDouble(x, y, 0, c);
+            gray /= n_color * maximum_value;
+            inside[y * nx + x]  = gray < threshold;
+            outside[y * nx + x] = !inside[y * nx + x];
+            n_inside += inside[y * nx + x];
+          }
+      if (n_inside == 0 || n_inside == nx * ny)
+        throw InputError(
+          "The image file <" + filename + "> has " +
+          (n_inside == 0 ? "no pixel darker" : "no pixel lighter") +
+          " than <Geometry / Threshold>: there is no edge.");
+
+      // the edge lies half-way between an inside and an outside pixel
+      const std::vector<double> to_inside = distance_transform(inside, nx, ny);
+      const std::vector<double> to_outside =
+        distance_transform(outside, nx, ny);
+      distance.resize(nx * ny);
+      for (unsigned int i = 0; i < nx * ny; ++i)
+        distance[i] = pixel_size *
+                      (inside[i] ? -(to_outside[i] - 0.5) : to_inside[i] - 0.5);
+    }
+
+
+
+    double
+    ImageDistance::value(const Point<2> &p, const unsigned int) const
+    {
+      // bilinear interpolation between pixel centres, clamped at the border
+      const auto coordinate = [&](const double x, const unsigned int n) {
+        const double       s = std::clamp(x / pixel_size - 0.5, 0., n - 1.);
+        const unsigned int i = std::min<unsigned int>(s, n - 2);
+        return std::make_pair(i, s - i);
+      };
+      const auto [i, sx] = coordinate(p[0], nx);
+      const auto [j, sy] = coordinate(p[1], ny);
+      const auto d       = [&](const unsigned int x, const unsigned int y) {
+        return distance[y * nx + x];
+      };
+      return (1 - sy) * ((1 - sx) * d(i, j) + sx * d(i + 1, j)) +
+             sy * ((1 - sx) * d(i, j + 1) + sx * d(i + 1, j + 1));
+    }
+
+
+
+    std::shared_ptr<Function<2>>
+    create_damaged_image(const GeometryParameters &geometry,
+                         const std::string        &image_file,
+                         const double              threshold,
+                         const Box2D              &damage)
+    {
+      const std::string           &shape  = geometry.shape;
+      const Point<2>               center = Shapes::shape_center<2>(geometry);
+      std::shared_ptr<Function<2>> intact;
+      if (shape == "damaged circle")
+        {
+          if (!(geometry.radius > 0))
+            throw InputError("<Geometry / Radius> must be positive.");
+          intact = std::make_shared<Shapes::SphereDistance<2>>(center,
+                                                               geometry.radius);
+        }
+      else if (shape == "cross" || shape == "bar")
+        {
+          const std::vector<double> sizes = two_sizes(geometry, shape);
+          const std::vector<double> lower = {center[0] - sizes[0] / 2,
+                                             center[1] - sizes[1] / 2};
+          const std::vector<double> upper = {center[0] + sizes[0] / 2,
+                                             center[1] + sizes[1] / 2};
+          // the cross: the bar and the bar rotated by 90 degrees
+          const std::vector<double> lower_rotated = {center[0] - sizes[1] / 2,
+                                                     center[1] - sizes[0] / 2};
+          const std::vector<double> upper_rotated = {center[0] + sizes[1] / 2,
+                                                     center[1] + sizes[0] / 2};
+          const bool                is_cross      = (shape == "cross");
+          intact = std::make_shared<Shapes::FunctionFromCallable<2>>(
+            [=](const Point<2> &p) {
+              const double bar = box_distance(p, lower, upper);
+              return is_cross ?
+                       std::min(bar,
+                                box_distance(p, lower_rotated, upper_rotated)) :
+                       bar;
+            });
+        }
+      else if (shape == "image")
+        intact = std::make_shared<ImageDistance>(image_file, threshold);
+      else
+        intact = Shapes::create_signed_distance<2>(geometry);
+
+      if (damage.empty())
+        return intact;
+      // the shape minus the damaged box
+      return std::make_shared<Shapes::FunctionFromCallable<2>>(
+        [intact, damage](const Point<2> &p) {
+          return std::max(intact->value(p),
+                          -box_distance(p, damage.lower, damage.upper));
+        });
+    }
+
+
+
+    void
+    write_picture(const std::vector<double> &values,
+                  const unsigned int         n,
+                  const Box2D               &region,
+                  const std::string         &filename)
+    {
+      constexpr double        outline_width = 1.5; // pixels
+      constexpr unsigned char full          = 255;
+      vtkNew<vtkImageData>    image;
+      image->SetDimensions(n, n, 1);
+      image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+      const auto near = [&](const double pixel, const double x) {
+        return std::abs(pixel - (x * n - 0.5)) <= outline_width / 2;
+      };
+      const auto between =
+        [&](const double pixel, const double a, const double b) {
+          return pixel >= a * n - 0.5 - outline_width / 2 &&
+                 pixel <= b * n - 0.5 + outline_width / 2;
+        };
+      for (unsigned int y = 0; y < n; ++y)
+        for (unsigned int x = 0; x < n; ++x)
+          {
+            auto *pixel =
+              static_cast<unsigned char *>(image->GetScalarPointer(x, y, 0));
+            const bool outline =
+              ((near(x, region.lower[0]) || near(x, region.upper[0])) &&
+               between(y, region.lower[1], region.upper[1])) ||
+              ((near(y, region.lower[1]) || near(y, region.upper[1])) &&
+               between(x, region.lower[0], region.upper[0]));
+            if (outline)
+              {
+                pixel[0] = full;
+                pixel[1] = pixel[2] = 0;
+                continue;
+              }
+            const double u = std::clamp(values[y * n + x], -1., 1.);
+            pixel[0] = pixel[1] = pixel[2] =
+              static_cast<unsigned char>(std::lround(0.5 * (u + 1) * full));
+          }
+      vtkNew<vtkPNGWriter> writer;
+      writer->SetFileName(filename.c_str());
+      writer->SetInputData(image);
+      writer->Write();
+      AssertThrow(writer->GetErrorCode() == 0,
+                  ExcMessage("Could not write the picture <" + filename +
+                             ">."));
+    }
+
+
+
+    std::vector<double>
+    sample_on_pixel_grid(const DoFHandler<2>                 &dof_handler,
+                         const TrilinosWrappers::MPI::Vector &u,
+                         const unsigned int                   n)
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      TrilinosWrappers::MPI::Vector ghosted(dof_handler.locally_owned_dofs(),
+                                            relevant,
+                                            u.get_mpi_communicator());
+      ghosted = u;
+
+      // every pixel centre lies in exactly one half-open cell [x0,x1)x[y0,y1)
+      std::vector<double> values(n * n, 0.);
+      const auto          first_pixel = [n](const double x) {
+        return static_cast<int>(std::ceil(x * n - 0.5));
+      };
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            // Q1 vertices 0..3: (0,0), (1,0), (0,1), (1,1) of the cell
+            const Point<2> lower = cell->vertex(0), upper = cell->vertex(3);
+            const double   width = upper[0] - lower[0];
+            double         corner[4];
+            for (unsigned int v = 0; v < 4; ++v)
+              corner[v] = ghosted(cell->vertex_dof_index(v, 0));
+            for (int j = std::max(0, first_pixel(lower[1]));
+                 j < std::min<int>(n, first_pixel(upper[1]));
+                 ++j)
+              for (int i = std::max(0, first_pixel(lower[0]));
+                   i < std::min<int>(n, first_pixel(upper[0]));
+                   ++i)
+                {
+                  const double sx = ((i + 0.5) / n - lower[0]) / width;
+                  const double sy = ((j + 0.5) / n - lower[1]) / width;
+                  values[j * n + i] =
+                    (1 - sy) * ((1 - sx) * corner[0] + sx * corner[1]) +
+                    sy * ((1 - sx) * corner[2] + sx * corner[3]);
+                }
+          }
+      Utilities::MPI::sum(values, u.get_mpi_communicator(), values);
+      return values;
+    }
+  } // namespace Images
+} // namespace PhaseField

@@ -1,0 +1,282 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <fstream>
+#include <phasefield/mesh/discretization.h>
+#include <phasefield/mesh/narrow_band.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * deal.II's smoothing on refinement and coarsening, without
+     * eliminate_unrefined_islands unless @p refine_unrefined_islands.
+     */
+    template <int dim>
+    typename Triangulation<dim>::MeshSmoothing
+    mesh_smoothing(const bool refine_unrefined_islands)
+    {
+      using Tria = Triangulation<dim>;
+      if (refine_unrefined_islands)
+        return typename Tria::MeshSmoothing(Tria::smoothing_on_refinement |
+                                            Tria::smoothing_on_coarsening);
+      return
+        typename Tria::MeshSmoothing(Tria::limit_level_difference_at_vertices |
+                                     Tria::smoothing_on_coarsening);
+    }
+
+
+
+    /** Number of cells flagged for refinement or coarsening on all ranks. */
+    template <int dim>
+    unsigned int
+    n_flagged_cells(const parallel::distributed::Triangulation<dim> &tria)
+    {
+      unsigned int n_flagged = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (cell->refine_flag_set() || cell->coarsen_flag_set()))
+          ++n_flagged;
+      return Utilities::MPI::sum(n_flagged, tria.get_communicator());
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  Discretization<dim>::Discretization(const Settings &settings,
+                                      const MPI_Comm  mpi_communicator)
+    : settings(settings)
+    , mpi_communicator(mpi_communicator)
+    , triangulation(mpi_communicator,
+                    mesh_smoothing<dim>(settings.refine_unrefined_islands))
+    , fe(1)
+    , dof_handler(triangulation)
+  {}
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::create_mesh(const Function<dim> *signed_distance,
+                                   const double         epsilon)
+  {
+    const MeshParameters &mesh = settings.mesh;
+    const bool            periodic =
+      settings.boundary_conditions == BoundaryConditions::periodic;
+    // colorize: boundary id 2d (x_d = 0) and 2d+1 (x_d = 1)
+    GridGenerator::hyper_cube(triangulation, 0., 1., periodic);
+    if (periodic)
+      {
+        std::vector<GridTools::PeriodicFacePair<
+          typename parallel::distributed::Triangulation<dim>::cell_iterator>>
+          periodicity_vector;
+        for (unsigned int d = 0; d < dim; ++d)
+          GridTools::collect_periodic_faces(
+            triangulation, 2 * d, 2 * d + 1, d, periodicity_vector);
+        triangulation.add_periodicity(periodicity_vector);
+      }
+    if (!mesh.adaptive || signed_distance == nullptr)
+      triangulation.refine_global(mesh.finest_level);
+    else
+      {
+        triangulation.refine_global(mesh.coarsest_level);
+        NarrowBand::refine_around_zero_level_set(triangulation,
+                                                 *signed_distance,
+                                                 mesh.band_width,
+                                                 epsilon,
+                                                 mesh.finest_level);
+      }
+    setup_dofs();
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::setup_dofs()
+  {
+    dof_handler.distribute_dofs(fe);
+
+    IndexSet locally_relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    switch (settings.boundary_conditions)
+      {
+        case BoundaryConditions::dirichlet:
+          VectorTools::interpolate_boundary_values(
+            dof_handler, 0, Functions::ZeroFunction<dim>(), constraints);
+          break;
+        case BoundaryConditions::periodic:
+          for (unsigned int d = 0; d < dim; ++d)
+            DoFTools::make_periodicity_constraints(
+              dof_handler, 2 * d, 2 * d + 1, d, constraints);
+          break;
+        case BoundaryConditions::natural:
+          break;
+      }
+    constraints.close();
+
+    operators.reinit(dof_handler,
+                     constraints,
+                     mpi_communicator,
+                     settings.mesh.stiffness_quadrature);
+  }
+
+
+
+  template <int dim>
+  bool
+  Discretization<dim>::adapt_to_phase_field(BlockVector &fields)
+  {
+    const MeshParameters &mesh = settings.mesh;
+    std::vector<Vector>   ghosted(fields.n_blocks());
+    for (unsigned int b = 0; b < fields.n_blocks(); ++b)
+      {
+        ghosted[b].reinit(operators.locally_owned_dofs,
+                          operators.locally_relevant_dofs,
+                          mpi_communicator);
+        ghosted[b] = fields.block(b);
+      }
+    NarrowBand::flag_cells_from_phase_field(dof_handler,
+                                            ghosted[0],
+                                            mesh.band_width,
+                                            mesh.finest_level,
+                                            mesh.coarsest_level,
+                                            settings.coarsening_band_factor *
+                                              mesh.band_width);
+    // smoothing removes flags that cannot be executed (2:1 balance,
+    // incomplete sibling groups); keep the mesh if none is left
+    triangulation.prepare_coarsening_and_refinement();
+    if (n_flagged_cells(triangulation) == 0)
+      return false;
+
+    parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
+    std::vector<const Vector *>                          in;
+    for (const auto &g : ghosted)
+      in.push_back(&g);
+    transfer.prepare_for_coarsening_and_refinement(in);
+    triangulation.execute_coarsening_and_refinement();
+
+    setup_dofs();
+    reinit(fields, fields.n_blocks());
+    std::vector<Vector *> out;
+    for (unsigned int b = 0; b < fields.n_blocks(); ++b)
+      out.push_back(&fields.block(b));
+    transfer.interpolate(out);
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::reinit(BlockVector &v, const unsigned int n_fields) const
+  {
+    v.reinit(std::vector<IndexSet>(n_fields, operators.locally_owned_dofs),
+             mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::distribute_constraints(BlockVector &v) const
+  {
+    for (unsigned int b = 0; b < v.n_blocks(); ++b)
+      constraints.distribute(v.block(b));
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::interpolate(const Function<dim> &function,
+                                   Vector              &v) const
+  {
+    VectorTools::interpolate(dof_handler, function, v);
+  }
+
+
+
+  template <int dim>
+  double
+  Discretization<dim>::error(const Vector               &u,
+                             const Function<dim>        &exact,
+                             const VectorTools::NormType norm) const
+  {
+    Vector ghosted(operators.locally_owned_dofs,
+                   operators.locally_relevant_dofs,
+                   mpi_communicator);
+    ghosted = u;
+    // exact for the Q1 part, 3 points per direction for the exact solution
+    const QGauss<dim>     quadrature(fe.degree + 2);
+    dealii::Vector<float> cellwise(triangulation.n_active_cells());
+    VectorTools::integrate_difference(
+      dof_handler, ghosted, exact, cellwise, quadrature, norm);
+    return VectorTools::compute_global_error(triangulation, cellwise, norm);
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::write_output(
+    const std::string                                         &directory,
+    const unsigned int                                         step,
+    const double                                               time,
+    const std::vector<std::pair<std::string, const Vector *>> &fields)
+  {
+    std::vector<Vector> ghosted(fields.size());
+    DataOut<dim>        data_out;
+    data_out.attach_dof_handler(dof_handler);
+    for (unsigned int i = 0; i < fields.size(); ++i)
+      {
+        ghosted[i].reinit(operators.locally_owned_dofs,
+                          operators.locally_relevant_dofs,
+                          mpi_communicator);
+        ghosted[i] = *fields[i].second;
+        data_out.add_data_vector(ghosted[i], fields[i].first);
+      }
+    dealii::Vector<float> subdomain(triangulation.n_active_cells());
+    dealii::Vector<float> level(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          subdomain(cell->active_cell_index()) = cell->subdomain_id();
+          level(cell->active_cell_index())     = cell->level();
+        }
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.add_data_vector(level, "level");
+    data_out.build_patches();
+    DataOutBase::VtkFlags flags;
+    flags.time  = time;
+    flags.cycle = step;
+    data_out.set_flags(flags);
+    constexpr unsigned int n_digits = 5;
+    const std::string      pvtu     = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "solution", step, mpi_communicator, n_digits);
+
+    pvd_records.emplace_back(time, pvtu);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ofstream pvd(directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+
+
+  template class Discretization<2>;
+  template class Discretization<3>;
+} // namespace PhaseField

@@ -1,0 +1,194 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <phasefield/mesh/lumped_operators.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::reinit(const DoFHandler<dim>           &dof_handler,
+                               const AffineConstraints<double> &constraints,
+                               const MPI_Comm            mpi_communicator,
+                               const StiffnessQuadrature stiffness_quadrature)
+  {
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    stiffness.reinit(locally_owned_dofs,
+                     locally_owned_dofs,
+                     dsp,
+                     mpi_communicator);
+    lumped_mass.reinit(locally_owned_dofs, mpi_communicator);
+
+    // Gauss-Lobatto points of Q1 are the vertices: the mass is lumped.
+    const QGaussLobatto<dim> lumping_quadrature(2);
+    const Quadrature<dim>    quadrature =
+      stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
+           Quadrature<dim>(QGaussLobatto<dim>(2)) :
+           Quadrature<dim>(QGauss<dim>(2));
+    const auto   &fe = dof_handler.get_fe();
+    FEValues<dim> fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    FEValues<dim> fe_lumped(fe,
+                            lumping_quadrature,
+                            update_values | update_JxW_values);
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    Vector<double>     cell_mass(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    double min_cell_mass = std::numeric_limits<double>::max();
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_lumped.reinit(cell);
+          cell_matrix = 0;
+          cell_mass   = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                cell_matrix(i, j) += fe_values.shape_grad(i, q) *
+                                     fe_values.shape_grad(j, q) *
+                                     fe_values.JxW(q);
+          for (unsigned int q = 0; q < lumping_quadrature.size(); ++q)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              cell_mass(i) += fe_lumped.shape_value(i, q) * fe_lumped.JxW(q);
+          min_cell_mass = std::min(min_cell_mass, cell_mass.linfty_norm());
+
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 dof_indices,
+                                                 stiffness);
+          constraints.distribute_local_to_global(cell_mass,
+                                                 dof_indices,
+                                                 lumped_mass);
+        }
+    stiffness.compress(VectorOperation::add);
+    lumped_mass.compress(VectorOperation::add);
+    min_cell_mass = Utilities::MPI::min(min_cell_mass, mpi_communicator);
+
+    inverse_lumped_mass.reinit(lumped_mass);
+    constrained_local_indices.clear();
+    const unsigned int n_local = lumped_mass.locally_owned_size();
+    for (unsigned int i = 0; i < n_local; ++i)
+      {
+        const types::global_dof_index g =
+          locally_owned_dofs.nth_index_in_set(i);
+        if (constraints.is_constrained(g))
+          {
+            constrained_local_indices.push_back(i);
+            inverse_lumped_mass.begin()[i] = 1. / min_cell_mass;
+          }
+        else
+          inverse_lumped_mass.begin()[i] = 1. / lumped_mass.begin()[i];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::stiffness_plus_weighted_mass(
+    const double                         stiffness_factor,
+    const TrilinosWrappers::MPI::Vector &nodal_weight,
+    TrilinosWrappers::SparseMatrix      &matrix) const
+  {
+    matrix.copy_from(stiffness);
+    matrix *= stiffness_factor;
+    TrilinosWrappers::MPI::Vector weighted_mass(nodal_weight);
+    weighted_mass.scale(lumped_mass);
+    add_to_diagonal(weighted_mass, matrix);
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::add_to_diagonal(
+    const TrilinosWrappers::MPI::Vector &values,
+    TrilinosWrappers::SparseMatrix      &matrix) const
+  {
+    const unsigned int n = values.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const types::global_dof_index g =
+          locally_owned_dofs.nth_index_in_set(i);
+        matrix.add(g, g, values.begin()[i]);
+      }
+    matrix.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::zero_constrained(
+    TrilinosWrappers::MPI::Vector &vector) const
+  {
+    for (const unsigned int i : constrained_local_indices)
+      vector.begin()[i] = 0;
+  }
+
+
+
+  template <int dim>
+  double
+  LumpedOperators<dim>::mass_product(
+    const TrilinosWrappers::MPI::Vector &x,
+    const TrilinosWrappers::MPI::Vector &y) const
+  {
+    const unsigned int n = x.locally_owned_size();
+    const double      *m = lumped_mass.begin();
+    double             s = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      s += m[i] * x.begin()[i] * y.begin()[i];
+    return Utilities::MPI::sum(s, lumped_mass.get_mpi_communicator());
+  }
+
+
+
+  template <int dim>
+  double
+  LumpedOperators<dim>::stiffness_product(
+    const TrilinosWrappers::MPI::Vector &x) const
+  {
+    TrilinosWrappers::MPI::Vector y(x), Ly(x);
+    zero_constrained(y);
+    stiffness.vmult(Ly, y);
+    return y * Ly;
+  }
+
+
+
+  template <int dim>
+  double
+  LumpedOperators<dim>::dual_norm(const TrilinosWrappers::MPI::Vector &r) const
+  {
+    const unsigned int n     = r.locally_owned_size();
+    const double      *m_inv = inverse_lumped_mass.begin();
+    double             s     = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      s += m_inv[i] * r.begin()[i] * r.begin()[i];
+    return std::sqrt(
+      Utilities::MPI::sum(s, lumped_mass.get_mpi_communicator()));
+  }
+
+
+
+  template class LumpedOperators<2>;
+  template class LumpedOperators<3>;
+} // namespace PhaseField

@@ -1,0 +1,52 @@
+#include <limits>
+#include <phasefield/geometry/shapes.h>
+#include <phasefield/problems/willmore_problem.h>
+
+namespace PhaseField
+{
+  namespace
+  {
+    /** Willmore flow of the `Geometry` shape. */
+    template <int dim>
+    typename PhaseFieldProblem<dim>::Setup
+    willmore_setup(const WillmoreParameters &parameters)
+    {
+      typename PhaseFieldProblem<dim>::Setup setup;
+      setup.program_name = "willmore_flow";
+      setup.signed_distance =
+        Shapes::create_signed_distance<dim>(parameters.geometry);
+      return setup;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  WillmoreProblem<dim>::WillmoreProblem(const WillmoreParameters &parameters)
+    : PhaseFieldProblem<dim>(parameters, willmore_setup<dim>(parameters))
+  {}
+
+
+
+  template <int dim>
+  double
+  WillmoreProblem<dim>::l2_error(const BlockVector &state,
+                                 const double       time) const
+  {
+    const WillmoreParameters &prm = this->prm;
+    const double radius = Shapes::exact_radius(prm.geometry, dim, time);
+    if (radius < 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    const Shapes::SphereDistance<dim> distance(
+      Shapes::shape_center<dim>(prm.geometry), radius);
+    const Shapes::PhaseFieldProfile<dim> exact(distance, prm.model.epsilon);
+    return this->discretization.error(state.block(0),
+                                      exact,
+                                      dealii::VectorTools::L2_norm);
+  }
+
+
+
+  template class WillmoreProblem<2>;
+  template class WillmoreProblem<3>;
+} // namespace PhaseField

@@ -1,0 +1,160 @@
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <phasefield/solvers/linear_solver.h>
+#include <phasefield/solvers/product_form.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  LinearSolver::LinearSolver(const LinearSolverType type,
+                             const double           relative_tolerance,
+                             const unsigned int     max_iterations,
+                             const bool             symmetric,
+                             const unsigned int     refactorization_threshold)
+    : solver_type(type)
+    , relative_tolerance(relative_tolerance)
+    , max_iterations(max_iterations)
+    , symmetric(symmetric)
+    , refactorization_threshold(refactorization_threshold)
+    , tolerance(relative_tolerance)
+  {
+    Assert(type != LinearSolverType::automatic,
+           ExcMessage("Resolve 'auto' before constructing the solver."));
+  }
+
+
+
+  LinearSolver::~LinearSolver() = default;
+
+
+
+  void
+  LinearSolver::set_tolerance(const double relative_tolerance)
+  {
+    tolerance = std::max(relative_tolerance, this->relative_tolerance);
+  }
+
+
+
+  void
+  LinearSolver::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    Assert(solver_type == LinearSolverType::direct, ExcInternalError());
+    factorization =
+      std::make_unique<DirectFactorization>(matrix, pivoting_workspace_percent);
+    ++factorization_count;
+  }
+
+
+
+  void
+  LinearSolver::reset()
+  {
+    factorization.reset();
+    last_iterations = 0;
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                      TrilinosWrappers::MPI::Vector        &solution,
+                      const TrilinosWrappers::MPI::Vector  &rhs)
+  {
+    SolverControl control(max_iterations,
+                          tolerance * rhs.l2_norm(),
+                          false,
+                          false);
+    solution = 0;
+    if (solver_type == LinearSolverType::direct && constant_matrix &&
+        factorization && factorization->size() == matrix.m())
+      {
+        factorization->vmult(solution, rhs);
+        last_iterations = 1;
+        return last_iterations;
+      }
+    if (solver_type == LinearSolverType::direct)
+      {
+        const auto refactorize = [&]() {
+          factorization =
+            std::make_unique<DirectFactorization>(matrix,
+                                                  pivoting_workspace_percent);
+          ++factorization_count;
+        };
+        bool fresh = false;
+        if (!factorization || factorization->size() != matrix.m() ||
+            last_iterations > refactorization_threshold)
+          {
+            refactorize();
+            fresh = true;
+          }
+        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+          control,
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+            50, /*right_preconditioning=*/true));
+        try
+          {
+            gmres.solve(matrix, solution, rhs, *factorization);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            // the factorisation of an earlier Newton matrix can be too far
+            // from this one to precondition it: factorise this one, once
+            if (fresh)
+              throw;
+            refactorize();
+            solution = 0;
+            gmres.solve(matrix, solution, rhs, *factorization);
+          }
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG amg;
+        amg.initialize(matrix, multigrid_settings());
+        if (symmetric)
+          {
+            SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+            cg.solve(matrix, solution, rhs, amg);
+          }
+        else
+          {
+            SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                50, /*right_preconditioning=*/true));
+            gmres.solve(matrix, solution, rhs, amg);
+          }
+      }
+    last_iterations = control.last_step();
+    return last_iterations;
+  }
+
+  unsigned int
+  LinearSolver::solve_product_form(
+    const TrilinosWrappers::SparseMatrix &k_hat,
+    const double                          w,
+    const TrilinosWrappers::MPI::Vector  &d,
+    const TrilinosWrappers::SparseMatrix &g,
+    const TrilinosWrappers::MPI::Vector  &mass,
+    const TrilinosWrappers::MPI::Vector  &inverse_mass,
+    TrilinosWrappers::MPI::Vector        &solution,
+    const TrilinosWrappers::MPI::Vector  &rhs)
+  {
+    Assert(solver_type == LinearSolverType::iterative, ExcInternalError());
+    const ProductFormMatrix   s(k_hat, w, d, inverse_mass);
+    const SchurPreconditioner preconditioner(g, mass);
+    ++factorization_count;
+    SolverControl                           control(max_iterations,
+                          tolerance * rhs.l2_norm(),
+                          false,
+                          false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    solution = 0;
+    cg.solve(s, solution, rhs, preconditioner);
+    last_iterations = control.last_step();
+    return last_iterations;
+  }
+} // namespace PhaseField

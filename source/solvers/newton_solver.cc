@@ -1,0 +1,159 @@
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <phasefield/solvers/newton_solver.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** Where the backtracking along a Newton update stopped. */
+    struct Backtracking
+    {
+      /** Number of halvings (max_damping_steps + 1: none accepted). */
+      unsigned int damping;
+      /** The step length taken. */
+      double lambda;
+      /** The residual norm there. */
+      double norm;
+    };
+
+
+
+    /**
+     * trial = z + lambda update for lambda = 1, 1/2, ... until the
+     * residual norm decreases below @p norm, reaches @p target, or (the
+     * full step, if @p watchdog_available) stays below
+     * NewtonControl::watchdog_factor times @p norm; without line search
+     * the full step. @p residual holds R(trial) on return.
+     */
+    Backtracking
+    backtrack(NonlinearSystem                          &system,
+              const TrilinosWrappers::MPI::BlockVector &z,
+              const TrilinosWrappers::MPI::BlockVector &update,
+              TrilinosWrappers::MPI::BlockVector       &trial,
+              TrilinosWrappers::MPI::BlockVector       &residual,
+              const NewtonControl                      &control,
+              const double                              norm,
+              const double                              target,
+              const bool                                watchdog_available)
+    {
+      Backtracking b{0, 1, std::numeric_limits<double>::quiet_NaN()};
+      for (; b.damping <= control.max_damping_steps;
+           ++b.damping, b.lambda *= 0.5)
+        {
+          trial = z;
+          trial.add(b.lambda, update);
+          system.distribute_constraints(trial);
+          system.residual(trial, residual);
+          b.norm              = system.residual_norm(residual);
+          const bool watchdog = b.damping == 0 && watchdog_available &&
+                                b.norm < control.watchdog_factor * norm;
+          if (!control.line_search ||
+              (std::isfinite(b.norm) &&
+               (b.norm < norm || b.norm <= target || watchdog)))
+            break;
+        }
+      return b;
+    }
+  } // namespace
+
+
+
+  StepReport
+  newton_solve(NonlinearSystem                    &system,
+               TrilinosWrappers::MPI::BlockVector &z,
+               const NewtonControl                &control,
+               LinearSolver                       &linear_solver,
+               const ConditionalOStream           &pcout,
+               const bool                          verbose)
+  {
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+    BlockVector residual(z), update(z), trial(z);
+
+    // The nonlinearity limits what the first update gains, so it needs
+    // little accuracy; later ones are solved just accurately enough to
+    // reach the target in one more iteration.
+    constexpr double first_linear_tolerance = 1e-3;
+    constexpr double linear_safety_factor   = 0.05;
+
+    StepReport   report;
+    double       norm   = 0;
+    const double target = internal::start_newton(
+      system, z, residual, control, pcout, verbose, norm, report);
+    if (report.converged || !std::isfinite(norm))
+      return report;
+
+    // Non-monotone "watchdog" step: once per solve a full Newton update is
+    // accepted even if it increases the residual norm by up to
+    // NewtonControl::watchdog_factor; the norm of the saddle-point
+    // residual is a poor merit function far from the solution, and damping
+    // the first update usually costs two or three extra iterations.
+    bool watchdog_used = false;
+    for (unsigned int it = 1; it <= control.max_iterations; ++it)
+      {
+        if (control.adapt_linear_tolerance)
+          linear_solver.set_tolerance(
+            it == 1 ? first_linear_tolerance :
+                      std::min(first_linear_tolerance,
+                               linear_safety_factor * target / norm));
+        const unsigned int linear_iterations =
+          system.solve_jacobian(z, residual, update, linear_solver);
+        report.linear_iterations += linear_iterations;
+        report.newton_iterations = it;
+
+        const Backtracking step       = backtrack(system,
+                                            z,
+                                            update,
+                                            trial,
+                                            residual,
+                                            control,
+                                            norm,
+                                            target,
+                                            !watchdog_used);
+        const unsigned int damping    = step.damping;
+        const double       lambda     = step.lambda;
+        const double       trial_norm = step.norm;
+        if (damping > control.max_damping_steps)
+          {
+            pcout << "    Newton iteration " << it
+                  << ": no damped update reduces the residual (residual "
+                  << norm << ")." << std::endl;
+            return report;
+          }
+        if (damping > 0)
+          pcout << "    Newton iteration " << it << ": update damped by "
+                << lambda << std::endl;
+        if (trial_norm >= norm)
+          watchdog_used = true;
+        const double previous_norm = norm;
+        z                          = trial;
+        norm                       = trial_norm;
+        report.final_residual_norm = norm;
+        if (verbose)
+          pcout << "    Newton " << it << ": residual " << norm << " ("
+                << linear_iterations << " linear iterations, "
+                << linear_solver.n_factorizations() << " factorizations)"
+                << std::endl;
+        // at round-off the residual stagnates above a tight target
+        const bool stagnating = control.roundoff_level > 0 &&
+                                norm <= control.roundoff_level &&
+                                norm >= 0.5 * previous_norm;
+        if (norm <= target || stagnating)
+          {
+            report.converged = true;
+            return report;
+          }
+        if (!std::isfinite(norm))
+          return report;
+      }
+    internal::print_newton_failure(pcout, control, norm, target);
+    return report;
+  }
+
+
+
+} // namespace PhaseField

@@ -1,0 +1,57 @@
+#include <cmath>
+#include <phasefield/solvers/nonlinear_system.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  NewtonControl::NewtonControl(const NewtonParameters &parameters)
+    : relative_tolerance(parameters.relative_tolerance)
+    , absolute_tolerance(parameters.absolute_tolerance)
+    , max_iterations(parameters.max_iterations)
+    , max_damping_steps(parameters.max_damping_steps)
+    , watchdog_factor(parameters.watchdog_factor)
+  {}
+
+
+
+  namespace internal
+  {
+    double
+    start_newton(const NonlinearSystem                    &system,
+                 const TrilinosWrappers::MPI::BlockVector &z,
+                 TrilinosWrappers::MPI::BlockVector       &residual,
+                 const NewtonControl                      &control,
+                 const ConditionalOStream                 &pcout,
+                 const bool                                verbose,
+                 double                                   &norm,
+                 StepReport                               &report)
+    {
+      system.residual(z, residual);
+      norm                         = system.residual_norm(residual);
+      report.initial_residual_norm = norm;
+      report.final_residual_norm   = norm;
+      const double target =
+        std::max(control.relative_tolerance * norm,
+                 control.absolute_tolerance * system.term_scale(z));
+      if (verbose)
+        pcout << "    Newton 0: residual " << norm << " (target " << target
+              << ')' << std::endl;
+      report.converged = std::isfinite(norm) && norm <= target;
+      return target;
+    }
+
+
+
+    void
+    print_newton_failure(const ConditionalOStream &pcout,
+                         const NewtonControl      &control,
+                         const double              norm,
+                         const double              target)
+    {
+      pcout << "    Newton did not reach the tolerance in "
+            << control.max_iterations << " iterations (residual " << norm
+            << ", target " << target << ")." << std::endl;
+    }
+  } // namespace internal
+} // namespace PhaseField

@@ -1,0 +1,265 @@
+#include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <iomanip>
+#include <phasefield/time/time_loop.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** @p head followed by @p tail. */
+    template <typename T>
+    std::vector<T>
+    concatenate(std::vector<T> head, const std::vector<T> &tail)
+    {
+      head.insert(head.end(), tail.begin(), tail.end());
+      return head;
+    }
+
+    /** The message of a step that failed after @p attempt halvings. */
+    std::string
+    step_failure_message(const unsigned int step,
+                         const unsigned int attempt,
+                         const double       tau)
+    {
+      return "Newton's method did not converge in step " +
+             std::to_string(step) +
+             (attempt == 0 ?
+                std::string(" (retrying with smaller time steps is "
+                            "switched off: Newton / Maximum step "
+                            "halvings = 0)") :
+                " even after halving the time step " + std::to_string(attempt) +
+                  " times") +
+             " (tau = " + std::to_string(tau) +
+             "). Try a smaller <Time stepping / Tau> or a larger "
+             "<Newton / Maximum iterations>. The statistics and output "
+             "up to the previous step are complete.";
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  typename TimeLoop<dim>::Settings
+  TimeLoop<dim>::Settings::from(const WillmoreParameters &parameters)
+  {
+    Settings s;
+    s.model               = parameters.model;
+    s.max_step_halvings   = parameters.newton.max_step_halvings;
+    s.adaptive            = parameters.mesh.adaptive;
+    s.refinement_interval = parameters.mesh.refinement_interval;
+    s.vtu_interval        = parameters.output.vtu_interval;
+    s.verbose             = parameters.output.verbose;
+    s.output_directory    = parameters.output_directory;
+    return s;
+  }
+
+
+
+  template <int dim>
+  TimeLoop<dim>::TimeLoop(const Settings           &settings,
+                          Discretization<dim>      &discretization,
+                          TimeSteppingScheme<dim>  &scheme,
+                          Client                   &client,
+                          const ConditionalOStream &pcout,
+                          TimerOutput              &timer)
+    : settings(settings)
+    , discretization(discretization)
+    , scheme(scheme)
+    , client(client)
+    , pcout(pcout)
+    , timer(timer)
+    , n_steps(settings.model.n_ramp_steps + settings.model.n_steps)
+    , state_tau(settings.model.tau)
+  {}
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::run(BlockVector &state)
+  {
+    statistics = std::make_unique<StatisticsFile>(
+      settings.output_directory + "/statistics.csv",
+      concatenate<std::string>({"step",
+                                "time",
+                                "newton_iterations",
+                                "linear_iterations",
+                                "cells",
+                                "dofs",
+                                "willmore_energy",
+                                "area_energy",
+                                "inside_measure",
+                                "l2_error",
+                                "wall_seconds",
+                                "tau",
+                                "residual_norm"},
+                               client.extra_columns()),
+      discretization.get_mpi_communicator());
+    record(0, state, StepReport(), settings.model.tau);
+
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        old_state        = state;
+        double       tau = settings.model.step_size(step);
+        const double energy_before =
+          scheme.has_energy_law() ? scheme.energy_law_energy(state) : 0.;
+        const StepReport report = advance_with_halving(step, state, tau);
+        if (scheme.has_energy_law())
+          check_energy_law(step, state, energy_before, tau);
+        state_tau = tau;
+        time += tau;
+        record(step, state, report, tau);
+        if (settings.adaptive && step % settings.refinement_interval == 0 &&
+            step < n_steps)
+          remesh(state);
+      }
+  }
+
+
+
+  template <int dim>
+  StepReport
+  TimeLoop<dim>::advance_with_halving(const unsigned int step,
+                                      BlockVector       &state,
+                                      double            &tau)
+  {
+    TimerOutput::Scope t(timer, "time step");
+    const BlockVector  saved = state;
+    for (unsigned int attempt = 0;; ++attempt)
+      {
+        scheme.prepare_step(state, state_tau, tau);
+        const StepReport report = client.advance(scheme, old_state, state, tau);
+        if (report.converged)
+          return report;
+        state = saved;
+        AssertThrow(attempt < settings.max_step_halvings,
+                    ExcMessage(step_failure_message(step, attempt, tau)));
+        tau *= 0.5;
+        pcout << "  step " << step
+              << ": Newton failed, retrying with half the time step, "
+                 "tau = "
+              << tau << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::check_energy_law(const unsigned int step,
+                                  const BlockVector &state,
+                                  const double       energy_before,
+                                  const double       tau) const
+  {
+    const double rise = scheme.energy_law_energy(state) +
+                        scheme.dissipation(old_state, state, tau) -
+                        energy_before;
+    if (settings.verbose)
+      pcout << "  energy + dissipation - energy before the step: "
+            << std::setprecision(4) << rise << std::endl;
+    // round-off of the energies relative to their size (the curvature
+    // (U - V) / ttau loses about log10(1/ttau) digits)
+    constexpr double energy_roundoff = 1e-10;
+    if (rise > energy_roundoff * std::abs(energy_before))
+      pcout << "  Warning: step " << step
+            << ": energy + dissipation exceeds the energy before the "
+               "step by "
+            << std::setprecision(4) << rise
+            << " (thesis Cor. 3.3 holds for the minimiser of the "
+               "outer energy, Newton found another critical point)"
+            << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::remesh(BlockVector &state)
+  {
+    TimerOutput::Scope t(timer, "mesh: adapt");
+    const bool   report_energy = settings.verbose && scheme.has_energy_law();
+    const double before = report_energy ? scheme.energy_law_energy(state) : 0.;
+    if (!discretization.adapt_to_phase_field(state))
+      return;
+    discretization.reinit(old_state, state.n_blocks());
+    client.after_remesh(state);
+    discretization.distribute_constraints(state);
+    scheme.after_remesh(state, state_tau);
+    discretization.distribute_constraints(state);
+    if (report_energy)
+      {
+        const auto precision = pcout.get_stream().precision(10);
+        pcout << "  re-meshing: energy " << before << " -> "
+              << scheme.energy_law_energy(state) << std::endl;
+        pcout.get_stream().precision(precision);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::record(const unsigned int step,
+                        const BlockVector &state,
+                        const StepReport  &report,
+                        const double       tau)
+  {
+    const Energies e     = scheme.energies(state);
+    const double   error = client.l2_error(state, time);
+    const double   dofs  = double(scheme.n_fields()) * discretization.n_dofs();
+    const double   cells =
+      discretization.get_triangulation().n_global_active_cells();
+    statistics->add_row(concatenate<double>({double(step),
+                                             time,
+                                             double(report.newton_iterations),
+                                             double(report.linear_iterations),
+                                             cells,
+                                             dofs,
+                                             e.willmore,
+                                             e.area,
+                                             e.inside_measure,
+                                             error,
+                                             wall_timer.wall_time(),
+                                             tau,
+                                             report.final_residual_norm},
+                                            client.extra_values(state, e)));
+    pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
+          << std::setprecision(5) << time << "  newton "
+          << report.newton_iterations << " (linear " << report.linear_iterations
+          << ")  W = " << std::setprecision(7) << e.willmore
+          << "  A = " << e.area << "  inside = " << e.inside_measure;
+    if (!std::isnan(error))
+      pcout << "  L2 error = " << std::setprecision(4) << error;
+    pcout << "  cells " << cells << "  [" << std::setprecision(3)
+          << wall_timer.wall_time() << " s]" << std::endl;
+    if (settings.vtu_interval > 0 &&
+        (step % settings.vtu_interval == 0 || step == n_steps))
+      output_results(step, state);
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::output_results(const unsigned int step,
+                                const BlockVector &state)
+  {
+    TimerOutput::Scope t(timer, "output");
+    Vector             curvature(state.block(0));
+    scheme.curvature(state, curvature);
+    const std::vector<std::string> names = scheme.field_names();
+    std::vector<std::pair<std::string, const Vector *>> fields;
+    for (unsigned int b = 0; b < names.size(); ++b)
+      fields.emplace_back(names[b], &state.block(b));
+    fields.emplace_back("curvature", &curvature);
+    discretization.write_output(settings.output_directory, step, time, fields);
+  }
+
+
+
+  template class TimeLoop<2>;
+  template class TimeLoop<3>;
+} // namespace PhaseField
