@@ -85,8 +85,8 @@ subsection Output
   set VTU interval = 0
 end
 )",
-                                                   cylinder_header,
-                                                   "results_cylinder");
+                                              cylinder_header,
+                                              "results_cylinder");
   Testing::log() << "quarter cylinder:" << std::endl;
   Testing::check_quarter_circle(cylinder, cylinder_header, 0.4, 0.10, 0.20);
 }

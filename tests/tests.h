@@ -87,8 +87,8 @@ namespace Testing
   {
     dealii::ParameterHandler prm;
     PhaseField::WillmoreParameters::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text + "\nset Output directory = " +
-                                directory + "\n");
+    prm.parse_input_from_string(prm_text +
+                                "\nset Output directory = " + directory + "\n");
     PhaseField::WillmoreParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.dimension == 2)
