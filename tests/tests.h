@@ -151,7 +151,10 @@ namespace Testing
 
   /**
    * Print the restoration columns and check that the weighted energy
-   * never increases and that U outside the region never changes.
+   * never increases and falls by more than 0.1% in the first step (the
+   * tests' inputs have corners and gaps: measured 72% and 6.6%; a solver
+   * that does nothing keeps the energy), and that U outside the region
+   * never changes.
    */
   inline void
   check_restoration_table(const std::vector<std::vector<double>> &rows,
@@ -173,7 +176,12 @@ namespace Testing
         if (i > 0)
           decreasing = decreasing && rows[i][energy] <= rows[i - 1][energy];
       }
-    log() << "weighted energy decreasing at every step: "
+    // relative decrease in step 1 that a moving solver certainly exceeds
+    constexpr double first_step_decrease = 1e-3;
+    decreasing                           = decreasing && rows.size() > 1 &&
+                 rows[1][energy] < (1 - first_step_decrease) * rows[0][energy];
+    log() << "weighted energy decreasing at every step, by more than 0.1% "
+             "in step 1: "
           << (decreasing ? "yes" : "NO") << '\n'
           << "U outside the region unchanged: " << (unchanged ? "yes" : "NO")
           << std::endl;
