@@ -1,8 +1,11 @@
 // Willmore flow of a quarter circle (r0 = 0.4 at the origin) on a small
 // adaptive mesh: Newton converges in few iterations, the energies are close
 // to the exact ones (quarter of pi/r and of 2 pi r), the radius measured by
-// the inside area follows r(t) = (2t + r0^4)^(1/4), and the Willmore energy
-// decreases. The .mpirun=2 variant checks that 2 ranks give the same table.
+// the inside area follows r(t) = (2t + r0^4)^(1/4), its growth since step 0
+// is that of the exact flow within 10% (a flow at half speed, a solver that
+// does nothing or a Willmore term of the wrong sign fail here), and the
+// Willmore energy decreases. The .mpirun=2 variant checks that 2 ranks give
+// the same table.
 
 #include "tests.h"
 
@@ -37,5 +40,5 @@ end
                                           header);
   Testing::print_columns(rows, header, Testing::checked_columns());
 
-  Testing::check_quarter_circle(rows, header, 0.4, 0.05);
+  Testing::check_quarter_circle(rows, header, 0.4, 0.02, 0.10);
 }

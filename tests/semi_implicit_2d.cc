@@ -40,5 +40,5 @@ end
                                           header);
   Testing::print_columns(rows, header, Testing::checked_columns());
 
-  Testing::check_quarter_circle(rows, header, 0.4, 0.10);
+  Testing::check_quarter_circle(rows, header, 0.4, 0.10, 0.10);
 }

@@ -78,22 +78,24 @@ namespace Testing
 {
   /**
    * Run willmore_flow on the parameters in @p prm_text (the test's output
-   * directory is "results") and return the rows of statistics.csv.
+   * directory is @p directory) and return the rows of statistics.csv.
    */
   inline std::vector<std::vector<double>>
-  run_willmore(const std::string &prm_text, std::vector<std::string> &header)
+  run_willmore(const std::string        &prm_text,
+               std::vector<std::string> &header,
+               const std::string        &directory = "results")
   {
     dealii::ParameterHandler prm;
     PhaseField::WillmoreParameters::declare_parameters(prm);
     prm.parse_input_from_string(prm_text +
-                                "\nset Output directory = results\n");
+                                "\nset Output directory = " + directory + "\n");
     PhaseField::WillmoreParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.dimension == 2)
       PhaseField::WillmoreProblem<2>(parameters).run();
     else
       PhaseField::WillmoreProblem<3>(parameters).run();
-    return read_csv("results/statistics.csv", header);
+    return read_csv(directory + "/statistics.csv", header);
   }
 
   /** The statistics.csv columns that the program tests compare. */
@@ -149,7 +151,10 @@ namespace Testing
 
   /**
    * Print the restoration columns and check that the weighted energy
-   * never increases and that U outside the region never changes.
+   * never increases and falls by more than 0.1% in the first step (the
+   * tests' inputs have corners and gaps: measured 72% and 6.6%; a solver
+   * that does nothing keeps the energy), and that U outside the region
+   * never changes.
    */
   inline void
   check_restoration_table(const std::vector<std::vector<double>> &rows,
@@ -171,42 +176,70 @@ namespace Testing
         if (i > 0)
           decreasing = decreasing && rows[i][energy] <= rows[i - 1][energy];
       }
-    log() << "weighted energy decreasing at every step: "
+    // relative decrease in step 1 that a moving solver certainly exceeds
+    constexpr double first_step_decrease = 1e-3;
+    decreasing                           = decreasing && rows.size() > 1 &&
+                 rows[1][energy] < (1 - first_step_decrease) * rows[0][energy];
+    log() << "weighted energy decreasing at every step, by more than 0.1% "
+             "in step 1: "
           << (decreasing ? "yes" : "NO") << '\n'
           << "U outside the region unchanged: " << (unchanged ? "yes" : "NO")
           << std::endl;
   }
   /**
+   * Radius of a quarter circle (or of a quarter cylinder of unit length)
+   * from the measure of its inside phase: r = sqrt(4 m / pi).
+   */
+  inline double
+  quarter_circle_radius(const std::vector<double>      &row,
+                        const std::vector<std::string> &header)
+  {
+    return std::sqrt(4 * row[column(header, "inside_measure")] / M_PI);
+  }
+
+  /**
    * Check a quarter-circle run (r0 = @p r0 at the origin) against the
-   * exact Willmore flow r(t) = (2t + r0^4)^(1/4): in every step after step
-   * 0 the radius from inside_measure is within 1%, the Willmore energy is
-   * within @p energy_tolerance of pi/(4r) and does not increase, and
-   * Newton needed at most 10 iterations. Logs one line with the verdict.
+   * exact Willmore flow r(t) = (2t + r0^4)^(1/4) (also the law of a
+   * quarter cylinder in 3D): in every step after step 0 the radius from
+   * inside_measure is within 1%, the Willmore energy is within
+   * @p energy_tolerance of pi/(4r) and does not increase, and Newton needed
+   * at most 10 iterations; and the growth of the radius since step 0 is
+   * within @p growth_tolerance of the exact growth r(t) - r0. The radius
+   * itself moves little in a few steps: only its growth tells a flow at
+   * half or double speed, a solver that does nothing or a Willmore term of
+   * the wrong sign (the circle shrinks) from the right one. Logs one line
+   * per verdict.
    */
   inline void
   check_quarter_circle(const std::vector<std::vector<double>> &rows,
                        const std::vector<std::string>         &header,
                        const double                            r0,
-                       const double                            energy_tolerance)
+                       const double                            energy_tolerance,
+                       const double                            growth_tolerance)
   {
     const double pi = M_PI;
-    bool         ok = true;
+    bool         ok = true, growth_ok = rows.size() > 1;
+    const double r_start = quarter_circle_radius(rows[0], header);
     for (unsigned int i = 1; i < rows.size(); ++i)
       {
-        const auto  &row     = rows[i];
-        const double t       = row[column(header, "time")];
-        const double r_exact = std::pow(2 * t + std::pow(r0, 4), 0.25);
-        const double r_measured =
-          std::sqrt(4 * row[column(header, "inside_measure")] / pi);
-        const double w = row[column(header, "willmore_energy")];
-        ok             = ok && std::abs(r_measured / r_exact - 1) < 0.01;
+        const auto  &row        = rows[i];
+        const double t          = row[column(header, "time")];
+        const double r_exact    = std::pow(2 * t + std::pow(r0, 4), 0.25);
+        const double r_measured = quarter_circle_radius(row, header);
+        const double w          = row[column(header, "willmore_energy")];
+        ok = ok && std::abs(r_measured / r_exact - 1) < 0.01;
         ok = ok && std::abs(w / (pi / (4 * r_exact)) - 1) < energy_tolerance;
         ok = ok && w <= rows[i - 1][column(header, "willmore_energy")];
         ok = ok && row[column(header, "newton_iterations")] <= 10;
+        const double growth = (r_measured - r_start) / (r_exact - r0);
+        growth_ok = growth_ok && std::abs(growth - 1) < growth_tolerance;
       }
     log() << "radius within 1%, Willmore energy within "
           << std::round(100 * energy_tolerance)
           << "% and decreasing: " << (ok ? "yes" : "NO") << std::endl;
+    log() << "radius growth within " << std::round(100 * growth_tolerance)
+          << "% of the exact growth (2t + r0^4)^(1/4) - r0: "
+          << (growth_ok ? "yes" : "NO") << std::endl;
   }
 } // namespace Testing
 

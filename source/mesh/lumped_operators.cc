@@ -31,6 +31,21 @@ namespace PhaseField
                      mpi_communicator);
     lumped_mass.reinit(locally_owned_dofs, mpi_communicator);
 
+    const double min_cell_mass =
+      assemble(dof_handler, constraints, stiffness_quadrature);
+    set_inverse_lumped_mass(constraints,
+                            Utilities::MPI::min(min_cell_mass,
+                                                mpi_communicator));
+  }
+
+
+
+  template <int dim>
+  double
+  LumpedOperators<dim>::assemble(const DoFHandler<dim>           &dof_handler,
+                                 const AffineConstraints<double> &constraints,
+                                 const StiffnessQuadrature stiffness_quadrature)
+  {
     // Gauss-Lobatto points of Q1 are the vertices: the mass is lumped.
     const QGaussLobatto<dim> lumping_quadrature(2);
     const Quadrature<dim>    quadrature =
@@ -79,8 +94,17 @@ namespace PhaseField
         }
     stiffness.compress(VectorOperation::add);
     lumped_mass.compress(VectorOperation::add);
-    min_cell_mass = Utilities::MPI::min(min_cell_mass, mpi_communicator);
+    return min_cell_mass;
+  }
 
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::set_inverse_lumped_mass(
+    const AffineConstraints<double> &constraints,
+    const double                     min_cell_mass)
+  {
     inverse_lumped_mass.reinit(lumped_mass);
     constrained_local_indices.clear();
     const unsigned int n_local = lumped_mass.locally_owned_size();

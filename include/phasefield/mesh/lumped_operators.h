@@ -94,6 +94,26 @@ namespace PhaseField
     /** sqrt(r^T M^-1 r): the L2 norm of the function that r represents. */
     double
     dual_norm(const dealii::TrilinosWrappers::MPI::Vector &r) const;
+
+  private:
+    /**
+     * Assemble L (with the rule @p stiffness_quadrature) and M into the
+     * reinitialised matrix and vector; returns the smallest cell mass of
+     * this rank.
+     */
+    double
+    assemble(const dealii::DoFHandler<dim>           &dof_handler,
+             const dealii::AffineConstraints<double> &constraints,
+             const StiffnessQuadrature                stiffness_quadrature);
+
+    /**
+     * inverse_lumped_mass and constrained_local_indices, with
+     * 1/@p min_cell_mass at the constrained DoFs.
+     */
+    void
+    set_inverse_lumped_mass(
+      const dealii::AffineConstraints<double> &constraints,
+      const double                             min_cell_mass);
   };
 } // namespace PhaseField
 
