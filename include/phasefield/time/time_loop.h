@@ -65,6 +65,17 @@ namespace PhaseField
       }
 
       /**
+       * After a checkpoint was loaded into @p state on a new mesh: rebuild
+       * the problem's own data on the mesh (edge restoration: the fixed
+       * DoFs and values), leaving @p state as it is.
+       */
+      virtual void
+      after_load(BlockVector &state)
+      {
+        (void)state;
+      }
+
+      /**
        * ||U - U_exact(@p time)||_L2 where an exact evolution is known,
        * NaN otherwise.
        */
@@ -104,6 +115,8 @@ namespace PhaseField
       unsigned int    vtu_interval;
       bool            verbose;
       std::string     output_directory;
+      /** Write a checkpoint every this many steps (0: never). */
+      unsigned int checkpoint_interval;
 
       /** The settings of the Willmore-flow parameters. */
       static Settings
@@ -125,7 +138,43 @@ namespace PhaseField
     void
     run(BlockVector &state);
 
+    /**
+     * Instead of run(): load the newest checkpoint of the output directory
+     * (on any number of ranks) into @p state on a new mesh, keep the rows
+     * of statistics.csv and the .pvd records up to its step k, and run
+     * steps k+1, ..., as the run that wrote it would have. Throws
+     * InputError if there is no checkpoint, or if it has another number of
+     * fields than the scheme.
+     */
+    void
+    resume(BlockVector &state);
+
   private:
+    /** The columns of statistics.csv. */
+    std::vector<std::string>
+    statistics_columns() const;
+
+    /**
+     * Steps @p first_step, ..., n_steps from @p state, with re-meshing and
+     * checkpoints.
+     */
+    void
+    run_steps(const unsigned int first_step, BlockVector &state);
+
+    /**
+     * Load the newest checkpoint into @p state and restore time,
+     * state_tau and the .pvd records; returns its step.
+     */
+    unsigned int
+    load_checkpoint(BlockVector &state);
+
+    /**
+     * Write the checkpoint after step @p step and reset the scheme's
+     * solver (TimeSteppingScheme::reset_solver()).
+     */
+    void
+    write_checkpoint(const unsigned int step, const BlockVector &state);
+
     /**
      * Step @p step from old_state into @p state with the step size
      * @p tau, halved on failure (@p tau is then the size taken).
