@@ -184,8 +184,9 @@ namespace PhaseField
   Discretization<dim>::load(const std::string &filename_base,
                             BlockVector       &fields)
   {
-    Assert(triangulation.n_cells() == 0,
-           ExcMessage("load() needs an empty mesh."));
+    // the loaded mesh has its cells (and so its DoFs) in p4est's order,
+    // which does not depend on the history of the mesh
+    triangulation.clear();
     create_coarse_mesh();
     triangulation.load(filename_base);
     setup_dofs();

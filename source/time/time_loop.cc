@@ -155,6 +155,7 @@ namespace PhaseField
                        "that wrote it).");
     state.reinit(saved.n_fields);
     discretization.load(Checkpoint::mesh_filename(path), state);
+    discretization.reinit(old_state, saved.n_fields);
     discretization.set_pvd_records(saved.pvd_records);
     time      = saved.time;
     state_tau = saved.state_tau;
@@ -197,8 +198,7 @@ namespace PhaseField
 
   template <int dim>
   void
-  TimeLoop<dim>::write_checkpoint(const unsigned int step,
-                                  const BlockVector &state)
+  TimeLoop<dim>::write_checkpoint(const unsigned int step, BlockVector &state)
   {
     TimerOutput::Scope t(timer, "checkpoint: write");
     Checkpoint::State  saved;
@@ -208,9 +208,10 @@ namespace PhaseField
     saved.n_fields    = state.n_blocks();
     saved.pvd_records = discretization.get_pvd_records();
     Checkpoint::write(settings.output_directory, discretization, state, saved);
-    // a resumed run starts with a fresh solver: so does this one
-    scheme.reset_solver();
     pcout << "  checkpoint written after step " << step << std::endl;
+    // continue from what was written, as a resumed run does: the same
+    // cell and DoF order, a fresh solver
+    load_checkpoint(state);
   }
 
 

@@ -108,8 +108,9 @@ namespace PhaseField
      * mesh as create_mesh() does, load the refinement, set up the DoFs and
      * read the fields into @p fields, which must have as many blocks as
      * were saved (their sizes do not matter; constraints are not
-     * distributed). Must be called instead of create_mesh(), on an empty
-     * mesh. Collective.
+     * distributed). Replaces any current mesh: the cells (and DoFs) are
+     * then in the order of p4est, whatever the history of the saved mesh.
+     * Collective.
      */
     void
     load(const std::string &filename_base, BlockVector &fields);

@@ -169,11 +169,15 @@ namespace PhaseField
     load_checkpoint(BlockVector &state);
 
     /**
-     * Write the checkpoint after step @p step and reset the scheme's
-     * solver (TimeSteppingScheme::reset_solver()).
+     * Write the checkpoint after step @p step, then continue from it as a
+     * resumed run would (load_checkpoint()): the same mesh in the order
+     * of p4est (Discretization::load()), the same state and a fresh solver
+     * (TimeSteppingScheme::reset_solver()). Only so are the following
+     * steps bitwise those of a run resumed from this checkpoint on the
+     * same number of ranks.
      */
     void
-    write_checkpoint(const unsigned int step, const BlockVector &state);
+    write_checkpoint(const unsigned int step, BlockVector &state);
 
     /**
      * Step @p step from old_state into @p state with the step size
