@@ -22,7 +22,9 @@ namespace PhaseField
    * law (thesis Cor. 3.3) for schemes that have one, narrow-band
    * re-meshing every `Mesh / Refinement interval` steps, a row of
    * statistics.csv and a progress line per step, VTU output every
-   * `Output / VTU interval` steps. It never asks which scheme it runs.
+   * `Output / VTU interval` steps, a checkpoint every `Checkpoint /
+   * Interval` steps (checkpoint.h) and resume() from the newest one. It
+   * never asks which scheme it runs.
    *
    * What a problem adds to the loop, it says through a TimeLoop::Client.
    */
