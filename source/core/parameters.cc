@@ -442,6 +442,47 @@ namespace PhaseField
 
 
   void
+  CheckpointParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    prm.declare_entry(
+      "Interval",
+      "0",
+      Patterns::Integer(0),
+      "Write a checkpoint (mesh, fields and time-stepping state, in the "
+      "directory checkpoint-<step> of the output directory) after every "
+      "step that is a multiple of this number, after the re-meshing of "
+      "that step; it replaces the previous checkpoint. The linear solver "
+      "forgets its factorisations at every checkpoint, so that a resumed "
+      "run computes the same steps as an uninterrupted one. 0: no "
+      "checkpoints.");
+    prm.declare_entry(
+      "Resume",
+      "false",
+      Patterns::Bool(),
+      "true: continue from the last checkpoint in the output directory "
+      "(on any number of MPI ranks) up to Number of steps, appending to "
+      "statistics.csv and solution.pvd. The other parameters must be those "
+      "of the run that wrote the checkpoint (Number of steps may be "
+      "larger). false: start from the initial shape; checkpoints of an "
+      "earlier run in the output directory are deleted.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  CheckpointParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    interval = prm.get_integer("Interval");
+    resume   = prm.get_bool("Resume");
+    prm.leave_subsection();
+  }
+
+
+
+  void
   WillmoreParameters::declare_parameters(ParameterHandler  &prm,
                                          const std::string &extra_shapes,
                                          const std::string &extra_documentation)
@@ -456,6 +497,7 @@ namespace PhaseField
     NewtonParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
+    CheckpointParameters::declare_parameters(prm);
   }
 
 
@@ -471,6 +513,7 @@ namespace PhaseField
     newton.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     output.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
     model.evaluate(mesh.h());
   }
 

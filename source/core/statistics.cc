@@ -1,25 +1,98 @@
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <iomanip>
+#include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
 
 namespace PhaseField
 {
+  namespace
+  {
+    /**
+     * The lines of the CSV file @p filename after its header @p header
+     * whose first entry (the step) is at most @p last_kept_step.
+     */
+    std::vector<std::string>
+    rows_up_to_step(const std::string &filename,
+                    const std::string &header,
+                    const unsigned int last_kept_step)
+    {
+      std::ifstream in(filename);
+      std::string   line;
+      if (!in || !std::getline(in, line))
+        throw std::runtime_error("Cannot continue <" + filename +
+                                 ">: the file is missing or empty.");
+      if (line != header)
+        throw std::runtime_error(
+          "Cannot continue <" + filename + ">: its columns <" + line +
+          "> are not those of this run <" + header + ">.");
+      std::vector<std::string> rows;
+      while (std::getline(in, line))
+        if (!line.empty() &&
+            std::stod(line.substr(0, line.find(','))) <= last_kept_step)
+          rows.push_back(line);
+      return rows;
+    }
+  } // namespace
+
+
+
+  std::string
+  StatisticsFile::header(const std::vector<std::string> &columns)
+  {
+    std::string line;
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      line += (i ? "," : "") + columns[i];
+    return line;
+  }
+
+
+
   StatisticsFile::StatisticsFile(const std::string              &filename,
                                  const std::vector<std::string> &columns,
                                  const MPI_Comm mpi_communicator)
     : n_columns(columns.size())
     , is_root(dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
   {
-    if (!is_root)
-      return;
-    file.open(filename);
-    AssertThrow(file, dealii::ExcMessage("Cannot write <" + filename + ">."));
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      file << (i ? "," : "") << columns[i];
-    file << std::endl;
+    run_on_root(mpi_communicator, [&]() {
+      file.open(filename);
+      if (!file)
+        throw std::runtime_error("Cannot write <" + filename + ">.");
+      file << header(columns) << std::endl;
+    });
+  }
+
+
+
+  StatisticsFile::StatisticsFile(const std::string              &filename,
+                                 const std::vector<std::string> &columns,
+                                 const MPI_Comm     mpi_communicator,
+                                 const unsigned int last_kept_step)
+    : n_columns(columns.size())
+    , is_root(dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+  {
+    run_on_root(mpi_communicator, [&]() {
+      const std::vector<std::string> rows =
+        rows_up_to_step(filename, header(columns), last_kept_step);
+      // rewrite under a temporary name: a kill leaves the old file intact
+      const std::string temporary = filename + ".tmp";
+      {
+        std::ofstream out(temporary);
+        out << header(columns) << '\n';
+        for (const std::string &row : rows)
+          out << row << '\n';
+        if (!out.flush())
+          throw std::runtime_error("Cannot write <" + temporary + ">.");
+      }
+      std::filesystem::rename(temporary, filename);
+      file.open(filename, std::ios::app);
+      if (!file)
+        throw std::runtime_error("Cannot append to <" + filename + ">.");
+    });
   }
 
 
@@ -41,6 +114,40 @@ namespace PhaseField
           file << values[i];
       }
     file << std::endl;
+  }
+
+
+
+  void
+  run_on_root(const MPI_Comm               mpi_communicator,
+              const std::function<void()> &function)
+  {
+    // what happened on rank 0: 0 success, 1 InputError, 2 another error
+    enum Outcome : int
+    {
+      success,
+      input_error,
+      other_error
+    };
+    std::pair<int, std::string> outcome(success, "");
+    if (dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      try
+        {
+          function();
+        }
+      catch (const InputError &error)
+        {
+          outcome = {input_error, error.what()};
+        }
+      catch (const std::exception &error)
+        {
+          outcome = {other_error, error.what()};
+        }
+    outcome = dealii::Utilities::MPI::broadcast(mpi_communicator, outcome, 0);
+    if (outcome.first == input_error)
+      throw InputError(outcome.second);
+    if (outcome.first == other_error)
+      throw std::runtime_error(outcome.second);
   }
 
 

@@ -66,11 +66,9 @@ namespace PhaseField
 
   template <int dim>
   void
-  Discretization<dim>::create_mesh(const Function<dim> *signed_distance,
-                                   const double         epsilon)
+  Discretization<dim>::create_coarse_mesh()
   {
-    const MeshParameters &mesh = settings.mesh;
-    const bool            periodic =
+    const bool periodic =
       settings.boundary_conditions == BoundaryConditions::periodic;
     // colorize: boundary id 2d (x_d = 0) and 2d+1 (x_d = 1)
     GridGenerator::hyper_cube(triangulation, 0., 1., periodic);
@@ -84,6 +82,17 @@ namespace PhaseField
             triangulation, 2 * d, 2 * d + 1, d, periodicity_vector);
         triangulation.add_periodicity(periodicity_vector);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::create_mesh(const Function<dim> *signed_distance,
+                                   const double         epsilon)
+  {
+    const MeshParameters &mesh = settings.mesh;
+    create_coarse_mesh();
     if (!mesh.adaptive || signed_distance == nullptr)
       triangulation.refine_global(mesh.finest_level);
     else
@@ -136,11 +145,10 @@ namespace PhaseField
 
 
   template <int dim>
-  bool
-  Discretization<dim>::adapt_to_phase_field(BlockVector &fields)
+  std::vector<typename Discretization<dim>::Vector>
+  Discretization<dim>::ghosted_copies(const BlockVector &fields) const
   {
-    const MeshParameters &mesh = settings.mesh;
-    std::vector<Vector>   ghosted(fields.n_blocks());
+    std::vector<Vector> ghosted(fields.n_blocks());
     for (unsigned int b = 0; b < fields.n_blocks(); ++b)
       {
         ghosted[b].reinit(operators.locally_owned_dofs,
@@ -148,6 +156,56 @@ namespace PhaseField
                           mpi_communicator);
         ghosted[b] = fields.block(b);
       }
+    return ghosted;
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::save(const std::string &filename_base,
+                            const BlockVector &fields) const
+  {
+    const std::vector<Vector>   ghosted = ghosted_copies(fields);
+    std::vector<const Vector *> in;
+    for (const auto &g : ghosted)
+      in.push_back(&g);
+    // the transfer attaches the fields to the cells until save() has
+    // written them
+    parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
+    transfer.prepare_for_serialization(in);
+    triangulation.save(filename_base);
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::load(const std::string &filename_base,
+                            BlockVector       &fields)
+  {
+    // the loaded mesh has its cells (and so its DoFs) in p4est's order,
+    // which does not depend on the history of the mesh
+    triangulation.clear();
+    create_coarse_mesh();
+    triangulation.load(filename_base);
+    setup_dofs();
+    reinit(fields, fields.n_blocks());
+    std::vector<Vector *> out;
+    for (unsigned int b = 0; b < fields.n_blocks(); ++b)
+      out.push_back(&fields.block(b));
+    parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
+    transfer.deserialize(out);
+  }
+
+
+
+  template <int dim>
+  bool
+  Discretization<dim>::adapt_to_phase_field(BlockVector &fields)
+  {
+    const MeshParameters     &mesh    = settings.mesh;
+    const std::vector<Vector> ghosted = ghosted_copies(fields);
     NarrowBand::flag_cells_from_phase_field(dof_handler,
                                             ghosted[0],
                                             mesh.band_width,

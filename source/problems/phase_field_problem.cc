@@ -69,16 +69,21 @@ namespace PhaseField
 
     create_output_directory(prm.output_directory, mpi_communicator);
     print_header();
-    {
-      TimerOutput::Scope t(computing_timer, "mesh: initial");
-      discretization.create_mesh(setup.signed_distance.get(),
-                                 prm.model.epsilon);
-    }
-    {
-      TimerOutput::Scope t(computing_timer, "initialisation");
-      initialize_fields();
-    }
-    time_loop.run(solution);
+    if (prm.checkpoint.resume)
+      time_loop.resume(solution);
+    else
+      {
+        {
+          TimerOutput::Scope t(computing_timer, "mesh: initial");
+          discretization.create_mesh(setup.signed_distance.get(),
+                                     prm.model.epsilon);
+        }
+        {
+          TimerOutput::Scope t(computing_timer, "initialisation");
+          initialize_fields();
+        }
+        time_loop.run(solution);
+      }
     computing_timer.print_summary();
     print_peak_memory(pcout, mpi_communicator);
   }

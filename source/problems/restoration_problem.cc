@@ -73,6 +73,15 @@ namespace PhaseField
 
 
   void
+  RestorationProblem::after_load(BlockVector &state)
+  {
+    (void)state;
+    setup_fixed_u();
+  }
+
+
+
+  void
   RestorationProblem::setup_fixed_u()
   {
     const DoFHandler<2>      &dof_handler = discretization.get_dof_handler();

@@ -869,11 +869,20 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedScheme<dim>::after_remesh(BlockVector &state, const double tau)
+  NestedScheme<dim>::reset_solver()
   {
     linear_solver->reset();
     constant_matrices =
       std::make_unique<typename NestedStep<dim>::ReducedMatrices>();
+  }
+
+
+
+  template <int dim>
+  void
+  NestedScheme<dim>::after_remesh(BlockVector &state, const double tau)
+  {
+    reset_solver();
     if (!settings.outer_energy.has_restoration_terms())
       return;
     // The transferred V is not the inner minimiser on the new mesh, and

@@ -312,9 +312,18 @@ namespace PhaseField
 
   template <int dim>
   void
-  SemiImplicitScheme<dim>::after_remesh(BlockVector &state, const double tau)
+  SemiImplicitScheme<dim>::reset_solver()
   {
     linear_solver->reset();
+  }
+
+
+
+  template <int dim>
+  void
+  SemiImplicitScheme<dim>::after_remesh(BlockVector &state, const double tau)
+  {
+    reset_solver();
     // F^k enters the next step's residual: it must be f_h(U^k) on the new
     // mesh, not an interpolation from the old one
     initialize(state, tau);

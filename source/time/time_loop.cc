@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
+#include <phasefield/time/checkpoint.h>
 #include <phasefield/time/time_loop.h>
 
 namespace PhaseField
@@ -53,6 +54,7 @@ namespace PhaseField
     s.vtu_interval        = parameters.output.vtu_interval;
     s.verbose             = parameters.output.verbose;
     s.output_directory    = parameters.output_directory;
+    s.checkpoint_interval = parameters.checkpoint.interval;
     return s;
   }
 
@@ -78,29 +80,98 @@ namespace PhaseField
 
 
   template <int dim>
+  std::vector<std::string>
+  TimeLoop<dim>::statistics_columns() const
+  {
+    return concatenate<std::string>({"step",
+                                     "time",
+                                     "newton_iterations",
+                                     "linear_iterations",
+                                     "cells",
+                                     "dofs",
+                                     "willmore_energy",
+                                     "area_energy",
+                                     "inside_measure",
+                                     "l2_error",
+                                     "wall_seconds",
+                                     "tau",
+                                     "residual_norm"},
+                                    client.extra_columns());
+  }
+
+
+
+  template <int dim>
   void
   TimeLoop<dim>::run(BlockVector &state)
   {
-    statistics = std::make_unique<StatisticsFile>(
-      settings.output_directory + "/statistics.csv",
-      concatenate<std::string>({"step",
-                                "time",
-                                "newton_iterations",
-                                "linear_iterations",
-                                "cells",
-                                "dofs",
-                                "willmore_energy",
-                                "area_energy",
-                                "inside_measure",
-                                "l2_error",
-                                "wall_seconds",
-                                "tau",
-                                "residual_norm"},
-                               client.extra_columns()),
-      discretization.get_mpi_communicator());
+    // checkpoints of an earlier run do not belong to this one
+    Checkpoint::remove_all(settings.output_directory,
+                           discretization.get_mpi_communicator());
+    statistics =
+      std::make_unique<StatisticsFile>(settings.output_directory +
+                                         "/statistics.csv",
+                                       statistics_columns(),
+                                       discretization.get_mpi_communicator());
     record(0, state, StepReport(), settings.model.tau);
+    run_steps(1, state);
+  }
 
-    for (unsigned int step = 1; step <= n_steps; ++step)
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::resume(BlockVector &state)
+  {
+    const unsigned int last_step = load_checkpoint(state);
+    statistics =
+      std::make_unique<StatisticsFile>(settings.output_directory +
+                                         "/statistics.csv",
+                                       statistics_columns(),
+                                       discretization.get_mpi_communicator(),
+                                       last_step);
+    pcout << "resuming after step " << last_step << " at t = " << time
+          << std::endl;
+    run_steps(last_step + 1, state);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  TimeLoop<dim>::load_checkpoint(BlockVector &state)
+  {
+    TimerOutput::Scope t(timer, "checkpoint: load");
+    const MPI_Comm     comm = discretization.get_mpi_communicator();
+    const std::string  path =
+      Checkpoint::find_last(settings.output_directory, comm);
+    const Checkpoint::State saved = Checkpoint::read_state(path, comm);
+    if (saved.n_fields != scheme.n_fields())
+      throw InputError("The checkpoint <" + path + "> has " +
+                       std::to_string(saved.n_fields) +
+                       " fields, but the scheme <" + scheme.name() + "> has " +
+                       std::to_string(scheme.n_fields()) +
+                       " (<Time stepping / Scheme> must be that of the run "
+                       "that wrote it).");
+    state.reinit(saved.n_fields);
+    discretization.load(Checkpoint::mesh_filename(path), state);
+    discretization.reinit(old_state, saved.n_fields);
+    discretization.set_pvd_records(saved.pvd_records);
+    time      = saved.time;
+    state_tau = saved.state_tau;
+    client.after_load(state);
+    scheme.reset_solver();
+    return saved.step;
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::run_steps(const unsigned int first_step, BlockVector &state)
+  {
+    const unsigned int checkpoints = settings.checkpoint_interval;
+    for (unsigned int step = first_step; step <= n_steps; ++step)
       {
         old_state        = state;
         double       tau = settings.model.step_size(step);
@@ -112,10 +183,35 @@ namespace PhaseField
         state_tau = tau;
         time += tau;
         record(step, state, report, tau);
+        // a checkpoint holds the start of the next step: after the last
+        // step too, the mesh is adapted for it
+        const bool checkpoint = checkpoints > 0 && step % checkpoints == 0;
         if (settings.adaptive && step % settings.refinement_interval == 0 &&
-            step < n_steps)
+            (step < n_steps || checkpoint))
           remesh(state);
+        if (checkpoint)
+          write_checkpoint(step, state);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::write_checkpoint(const unsigned int step, BlockVector &state)
+  {
+    TimerOutput::Scope t(timer, "checkpoint: write");
+    Checkpoint::State  saved;
+    saved.step        = step;
+    saved.time        = time;
+    saved.state_tau   = state_tau;
+    saved.n_fields    = state.n_blocks();
+    saved.pvd_records = discretization.get_pvd_records();
+    Checkpoint::write(settings.output_directory, discretization, state, saved);
+    pcout << "  checkpoint written after step " << step << std::endl;
+    // continue from what was written, as a resumed run does: the same
+    // cell and DoF order, a fresh solver
+    load_checkpoint(state);
   }
 
 

@@ -226,6 +226,26 @@ namespace PhaseField
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /**
+   * Subsection `Checkpoint`: checkpoint and resume of the time-dependent
+   * programs (willmore_flow, edge_restoration; see TimeLoop).
+   */
+  struct CheckpointParameters
+  {
+    /** Write a checkpoint every this many time steps (0: never). */
+    unsigned int interval;
+    /**
+     * Continue from the last checkpoint in the output directory instead of
+     * starting from the initial shape.
+     */
+    bool resume;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /** All parameters of willmore_flow. */
   struct WillmoreParameters
   {
@@ -237,6 +257,7 @@ namespace PhaseField
     NewtonParameters       newton;
     LinearSolverParameters linear_solver;
     OutputParameters       output;
+    CheckpointParameters   checkpoint;
 
     /** @p extra_shapes, @p extra_documentation: see GeometryParameters. */
     static void

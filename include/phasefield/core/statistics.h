@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,19 +18,51 @@ namespace PhaseField
   class StatisticsFile
   {
   public:
+    /**
+     * A new file @p filename with the header @p columns (an existing file
+     * is overwritten). Collective: an error on rank 0 is thrown on every
+     * rank.
+     */
     StatisticsFile(const std::string              &filename,
                    const std::vector<std::string> &columns,
                    const MPI_Comm                  mpi_communicator);
+
+    /**
+     * Append mode (a resumed run): the existing file @p filename must have
+     * the header @p columns, with the step in the first column. Its rows
+     * up to step @p last_kept_step are kept, later ones (written by a run
+     * that was killed after its last checkpoint) are dropped, and
+     * add_row() appends. Collective: an error on rank 0 is thrown on
+     * every rank.
+     */
+    StatisticsFile(const std::string              &filename,
+                   const std::vector<std::string> &columns,
+                   const MPI_Comm                  mpi_communicator,
+                   const unsigned int              last_kept_step);
 
     /** Append one row; must have as many entries as there are columns. */
     void
     add_row(const std::vector<double> &values);
 
   private:
+    /** The header line of @p columns. */
+    static std::string
+    header(const std::vector<std::string> &columns);
+
     const std::size_t n_columns;
     const bool        is_root;
     std::ofstream     file;
   };
+
+  /**
+   * Run @p function on rank 0 of @p mpi_communicator only (file system
+   * work); if it throws there, every rank throws: InputError as
+   * InputError, any other std::exception as std::runtime_error with the
+   * same message. So no rank waits for one that failed. Collective.
+   */
+  void
+  run_on_root(const MPI_Comm               mpi_communicator,
+              const std::function<void()> &function);
 
   /**
    * Create the output directory @p directory on rank 0; every rank

@@ -94,6 +94,44 @@ namespace PhaseField
     bool
     adapt_to_phase_field(BlockVector &fields);
 
+    /**
+     * Write the mesh and all blocks of @p fields to the files
+     * @p filename_base, @p filename_base_fixed.data and
+     * @p filename_base.info (parallel::distributed::Triangulation::save()
+     * with a SolutionTransfer). The directory must exist. Collective.
+     */
+    void
+    save(const std::string &filename_base, const BlockVector &fields) const;
+
+    /**
+     * Read what save() wrote, on any number of MPI ranks: create the coarse
+     * mesh as create_mesh() does, load the refinement, set up the DoFs and
+     * read the fields into @p fields, which must have as many blocks as
+     * were saved (their sizes do not matter; constraints are not
+     * distributed). Replaces any current mesh: the cells (and DoFs) are
+     * then in the order of p4est, whatever the history of the saved mesh.
+     * Collective.
+     */
+    void
+    load(const std::string &filename_base, BlockVector &fields);
+
+    /** Time and file of every output written so far (the .pvd records). */
+    const std::vector<std::pair<double, std::string>> &
+    get_pvd_records() const
+    {
+      return pvd_records;
+    }
+
+    /**
+     * Replace the .pvd records (a resumed run continues the .pvd of the
+     * run it resumes); the next write_output() appends to them.
+     */
+    void
+    set_pvd_records(const std::vector<std::pair<double, std::string>> &records)
+    {
+      pvd_records = records;
+    }
+
     /** @p v = @p n_fields blocks in the Q1 space, locally owned, zero. */
     void
     reinit(BlockVector &v, const unsigned int n_fields) const;
@@ -167,6 +205,17 @@ namespace PhaseField
     }
 
   private:
+    /**
+     * The coarse mesh: one cell [0,1]^dim, boundary ids 2d (x_d = 0) and
+     * 2d+1 (x_d = 1), periodic faces matched if the conditions are.
+     */
+    void
+    create_coarse_mesh();
+
+    /** @p fields with the ghost entries the transfer reads. */
+    std::vector<Vector>
+    ghosted_copies(const BlockVector &fields) const;
+
     /** DoFs, constraints and lumped operators on the current mesh. */
     void
     setup_dofs();

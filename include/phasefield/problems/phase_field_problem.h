@@ -32,7 +32,11 @@ namespace PhaseField
     using Vector      = dealii::TrilinosWrappers::MPI::Vector;
     using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
 
-    /** Run the whole simulation. Throws on failure. */
+    /**
+     * Run the whole simulation: from the initial shape, or with
+     * `Checkpoint / Resume` from the newest checkpoint in the output
+     * directory (TimeLoop::resume()). Throws on failure.
+     */
     virtual void
     run();
 

@@ -44,6 +44,9 @@ namespace PhaseField
     /** The fixed values on the new mesh. */
     void
     after_remesh(BlockVector &state) override;
+    /** The fixed DoFs and values on the loaded mesh. */
+    void
+    after_load(BlockVector &state) override;
 
   private:
     void

@@ -402,6 +402,8 @@ namespace PhaseField
             const double       tau) override;
     void
     after_remesh(BlockVector &state, const double tau) override;
+    void
+    reset_solver() override;
     /** Willmore energy (3/4) (1/2) eps Int ((U-V)/ttau)^2 and area. */
     Energies
     energies(const BlockVector &state) const override;

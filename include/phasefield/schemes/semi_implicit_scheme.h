@@ -146,6 +146,8 @@ namespace PhaseField
             const double       tau) override;
     void
     after_remesh(BlockVector &state, const double tau) override;
+    void
+    reset_solver() override;
     /** Willmore energy (3/4) w_eps[U] and area. */
     Energies
     energies(const BlockVector &state) const override;

@@ -93,12 +93,24 @@ namespace PhaseField
 
     /**
      * After re-meshing (fields transferred, constraints distributed):
-     * forget matrices and factorisations and restore what the transfer
-     * does not keep (the semi-implicit F = f(U); with restoration terms
-     * the nested V, P for the U of the step size @p tau).
+     * reset_solver() and restore what the transfer does not keep (the
+     * semi-implicit F = f(U); with restoration terms the nested V, P for
+     * the U of the step size @p tau).
      */
     virtual void
     after_remesh(BlockVector &state, const double tau) = 0;
+
+    /**
+     * Forget all matrices and factorisations (everything the scheme keeps
+     * between steps besides the state), as after re-meshing but without
+     * touching a field. Called after loading a checkpoint (the mesh is
+     * new) and, in every run, when a checkpoint is written: the direct
+     * solver reuses old factorisations as GMRES preconditioners, so only
+     * if both start with a fresh solver does a resumed run compute the
+     * same steps as an uninterrupted one.
+     */
+    virtual void
+    reset_solver() = 0;
 
     /** Energies of @p state in geometric units. */
     virtual Energies

@@ -22,7 +22,9 @@ namespace PhaseField
    * law (thesis Cor. 3.3) for schemes that have one, narrow-band
    * re-meshing every `Mesh / Refinement interval` steps, a row of
    * statistics.csv and a progress line per step, VTU output every
-   * `Output / VTU interval` steps. It never asks which scheme it runs.
+   * `Output / VTU interval` steps, a checkpoint every `Checkpoint /
+   * Interval` steps (checkpoint.h) and resume() from the newest one. It
+   * never asks which scheme it runs.
    *
    * What a problem adds to the loop, it says through a TimeLoop::Client.
    */
@@ -60,6 +62,17 @@ namespace PhaseField
        */
       virtual void
       after_remesh(BlockVector &state)
+      {
+        (void)state;
+      }
+
+      /**
+       * After a checkpoint was loaded into @p state on a new mesh: rebuild
+       * the problem's own data on the mesh (edge restoration: the fixed
+       * DoFs and values), leaving @p state as it is.
+       */
+      virtual void
+      after_load(BlockVector &state)
       {
         (void)state;
       }
@@ -104,6 +117,8 @@ namespace PhaseField
       unsigned int    vtu_interval;
       bool            verbose;
       std::string     output_directory;
+      /** Write a checkpoint every this many steps (0: never). */
+      unsigned int checkpoint_interval;
 
       /** The settings of the Willmore-flow parameters. */
       static Settings
@@ -125,7 +140,47 @@ namespace PhaseField
     void
     run(BlockVector &state);
 
+    /**
+     * Instead of run(): load the newest checkpoint of the output directory
+     * (on any number of ranks) into @p state on a new mesh, keep the rows
+     * of statistics.csv and the .pvd records up to its step k, and run
+     * steps k+1, ..., as the run that wrote it would have. Throws
+     * InputError if there is no checkpoint, or if it has another number of
+     * fields than the scheme.
+     */
+    void
+    resume(BlockVector &state);
+
   private:
+    /** The columns of statistics.csv. */
+    std::vector<std::string>
+    statistics_columns() const;
+
+    /**
+     * Steps @p first_step, ..., n_steps from @p state, with re-meshing and
+     * checkpoints.
+     */
+    void
+    run_steps(const unsigned int first_step, BlockVector &state);
+
+    /**
+     * Load the newest checkpoint into @p state and restore time,
+     * state_tau and the .pvd records; returns its step.
+     */
+    unsigned int
+    load_checkpoint(BlockVector &state);
+
+    /**
+     * Write the checkpoint after step @p step, then continue from it as a
+     * resumed run would (load_checkpoint()): the same mesh in the order
+     * of p4est (Discretization::load()), the same state and a fresh solver
+     * (TimeSteppingScheme::reset_solver()). Only so are the following
+     * steps bitwise those of a run resumed from this checkpoint on the
+     * same number of ranks.
+     */
+    void
+    write_checkpoint(const unsigned int step, BlockVector &state);
+
     /**
      * Step @p step from old_state into @p state with the step size
      * @p tau, halved on failure (@p tau is then the size taken).

@@ -1,0 +1,90 @@
+#ifndef phasefield_time_checkpoint_h
+#define phasefield_time_checkpoint_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/mesh/discretization.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PhaseField
+{
+  /**
+   * Checkpoints of the time loop. The checkpoint after step k is the
+   * directory `checkpoint-<k>` of the output directory with
+   *
+   * - `mesh`, `mesh_fixed.data`, `mesh.info`: the p4est mesh with all
+   *   fields (Discretization::save()), readable on any number of ranks;
+   * - `state.txt`: the time-stepping state (CheckpointState), written by
+   *   rank 0.
+   *
+   * A checkpoint is written as `checkpoint-<k>.tmp` and renamed when it is
+   * complete, and only then are older checkpoints deleted: a run killed
+   * while writing leaves the previous checkpoint usable.
+   */
+  namespace Checkpoint
+  {
+    /** The time-stepping state of a checkpoint besides mesh and fields. */
+    struct State
+    {
+      /** The last step taken; the run continues with step + 1. */
+      unsigned int step = 0;
+      /** The time after that step. */
+      double time = 0;
+      /**
+       * The step size that the fields belong to (the nested scheme's P is
+       * proportional to it), i.e. after any step halvings.
+       */
+      double state_tau = 0;
+      /** Number of fields (blocks of the state). */
+      unsigned int n_fields = 0;
+      /** The records of solution.pvd so far (time, file). */
+      std::vector<std::pair<double, std::string>> pvd_records;
+    };
+
+    /**
+     * Write the checkpoint of @p state (the fields on @p discretization)
+     * and @p time_stepping_state into @p directory and delete the older
+     * ones there. Collective.
+     */
+    template <int dim>
+    void
+    write(const std::string                                &directory,
+          const Discretization<dim>                        &discretization,
+          const dealii::TrilinosWrappers::MPI::BlockVector &state,
+          const State &time_stepping_state);
+
+    /**
+     * The path of the newest complete checkpoint in @p directory. Throws
+     * InputError naming <Checkpoint / Resume> and @p directory on every
+     * rank if there is none. Collective.
+     */
+    std::string
+    find_last(const std::string &directory, const MPI_Comm mpi_communicator);
+
+    /**
+     * The time-stepping state of the checkpoint @p path (read on rank 0,
+     * broadcast to all). Collective.
+     */
+    State
+    read_state(const std::string &path, const MPI_Comm mpi_communicator);
+
+    /**
+     * The base name of the mesh files of the checkpoint @p path, for
+     * Discretization::load().
+     */
+    std::string
+    mesh_filename(const std::string &path);
+
+    /**
+     * Delete every checkpoint (complete or not) in @p directory: a new
+     * run must not leave one that a later resume would mistake for its
+     * own. Collective.
+     */
+    void
+    remove_all(const std::string &directory, const MPI_Comm mpi_communicator);
+  } // namespace Checkpoint
+} // namespace PhaseField
+
+#endif

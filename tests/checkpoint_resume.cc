@@ -1,0 +1,201 @@
+// Checkpoint and resume of willmore_flow (quarter circle, small adaptive
+// mesh, re-meshing every step, VTU output): a run of 4 steps with
+// Checkpoint / Interval = 2 is compared with
+//  - a run of 2 steps (checkpoint after its last step) resumed up to 4;
+//  - a run of 3 steps (checkpoint after step 2, then one more row, as from
+//    a run killed after its checkpoint) resumed up to 4, which must drop
+//    that row and compute step 3 again.
+// In serial the statistics.csv rows (all columns but wall_seconds) and the
+// final fields agree bitwise (direct solver). On 2 ranks even two
+// identical runs differ by round-off, so there the columns but
+// residual_norm are compared to the digits of statistics.csv. Also:
+// Resume without a checkpoint is an InputError on every rank, and the
+// resumed .pvd lists the outputs of both parts. The .mpirun=2 variant
+// saves and loads on 2 ranks.
+
+#include "tests.h"
+
+#include <algorithm>
+#include <deal.II/base/mpi.h>
+
+namespace
+{
+  using namespace PhaseField;
+
+  const std::string base_prm = R"(
+set Dimension = 2
+subsection Geometry
+  set Shape = quarter circle
+  set Radius = 0.4
+end
+subsection Mesh
+  set Finest level = 6
+  set Coarsest level = 3
+end
+subsection Time stepping
+  set Tau = 0.03*h
+  set Inner tau = h^2
+end
+subsection Output
+  set VTU interval = 2
+end
+subsection Checkpoint
+  set Interval = 2
+end
+)";
+
+  /** What a run leaves: its statistics and the l2 norms of its fields. */
+  struct RunResult
+  {
+    std::vector<std::string>         header;
+    std::vector<std::vector<double>> rows;
+    std::vector<double>              field_norms;
+  };
+
+  /** willmore_flow for @p n_steps steps into @p directory. */
+  RunResult
+  run(const std::string &directory,
+      const unsigned int n_steps,
+      const bool         resume)
+  {
+    dealii::ParameterHandler prm;
+    WillmoreParameters::declare_parameters(prm);
+    prm.parse_input_from_string(
+      base_prm + "subsection Time stepping\n set Number of steps = " +
+      std::to_string(n_steps) + "\nend\nsubsection Checkpoint\n set Resume = " +
+      (resume ? "true" : "false") +
+      "\nend\nset Output directory = " + directory + "\n");
+    WillmoreParameters parameters;
+    parameters.parse_parameters(prm);
+    WillmoreProblem<2> problem(parameters);
+    problem.run();
+    RunResult result;
+    for (unsigned int b = 0; b < problem.state().n_blocks(); ++b)
+      result.field_norms.push_back(problem.state().block(b).l2_norm());
+    MPI_Barrier(MPI_COMM_WORLD);
+    result.rows =
+      Testing::read_csv(directory + "/statistics.csv", result.header);
+    return result;
+  }
+
+  /**
+   * Largest relative difference of @p a and @p b over all rows and all
+   * columns but wall_seconds and those in @p ignored (infinite if the
+   * tables differ in shape).
+   */
+  double
+  max_relative_difference(const RunResult               &a,
+                          const RunResult               &b,
+                          const std::vector<std::string> ignored = {})
+  {
+    if (a.rows.size() != b.rows.size() || a.header != b.header)
+      return std::numeric_limits<double>::infinity();
+    double max = 0;
+    for (unsigned int j = 0; j < a.header.size(); ++j)
+      if (a.header[j] != "wall_seconds" &&
+          std::find(ignored.begin(), ignored.end(), a.header[j]) ==
+            ignored.end())
+        for (unsigned int i = 0; i < a.rows.size(); ++i)
+          if (!(std::isnan(a.rows[i][j]) && std::isnan(b.rows[i][j])))
+            max = std::max(max,
+                           std::abs(a.rows[i][j] - b.rows[i][j]) /
+                             std::max(std::abs(a.rows[i][j]), 1e-300));
+    return max;
+  }
+
+  /**
+   * Print whether @p resumed agrees with @p reference. In serial it must
+   * agree bitwise. On 2 ranks two identical runs already differ by
+   * round-off (residual_norm of the converged step, from the parallel
+   * direct solver), so there the columns but residual_norm are compared
+   * to the digits that statistics.csv keeps.
+   */
+  void
+  compare(const std::string &name,
+          const RunResult   &reference,
+          const RunResult   &resumed)
+  {
+    constexpr double csv_digits_tolerance = 1e-8;
+    Testing::log() << name << ": " << resumed.rows.size()
+                   << " rows, all columns but wall_seconds and "
+                      "residual_norm agree to 1e-8: "
+                   << (max_relative_difference(reference,
+                                               resumed,
+                                               {"residual_norm"}) <=
+                           csv_digits_tolerance ?
+                         "yes" :
+                         "NO")
+                   << std::endl;
+    if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      return;
+    constexpr double tolerance = 1e-12;
+    Testing::log()
+      << "  all columns but wall_seconds agree to 1e-12: "
+      << (max_relative_difference(reference, resumed) <= tolerance ? "yes" :
+                                                                     "NO")
+      << ", final fields bitwise equal: "
+      << (reference.field_norms == resumed.field_norms ? "yes" : "NO")
+      << std::endl;
+  }
+
+  /** Number of <DataSet entries in @p filename. */
+  unsigned int
+  n_pvd_records(const std::string &filename)
+  {
+    std::ifstream in(filename);
+    std::string   line;
+    unsigned int  n = 0;
+    while (std::getline(in, line))
+      if (line.find("<DataSet") != std::string::npos)
+        ++n;
+    return n;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  const RunResult reference = run("uninterrupted", 4, false);
+  Testing::print_columns(reference.rows,
+                         reference.header,
+                         Testing::checked_columns());
+
+  run("resumed_after_last_step", 2, false);
+  compare("resumed after the last step of a run",
+          reference,
+          run("resumed_after_last_step", 4, true));
+  Testing::log() << "solution.pvd records: "
+                 << n_pvd_records("resumed_after_last_step/solution.pvd")
+                 << " (uninterrupted: "
+                 << n_pvd_records("uninterrupted/solution.pvd") << ")"
+                 << std::endl;
+
+  run("resumed_after_kill", 3, false);
+  compare("resumed after a run killed one step after its checkpoint",
+          reference,
+          run("resumed_after_kill", 4, true));
+
+  bool input_error = false;
+  try
+    {
+      run("no_checkpoint", 4, true);
+    }
+  catch (const InputError &error)
+    {
+      input_error =
+        std::string(error.what()).find("<Checkpoint / Resume>") !=
+          std::string::npos &&
+        std::string(error.what()).find("no_checkpoint") != std::string::npos;
+    }
+  Testing::log() << "Resume without a checkpoint: InputError naming the "
+                    "parameter and the directory on every rank: "
+                 << (dealii::Utilities::MPI::min(int(input_error),
+                                                 MPI_COMM_WORLD) ?
+                       "yes" :
+                       "NO")
+                 << std::endl;
+}
