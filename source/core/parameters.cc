@@ -2,6 +2,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
 #include <fstream>
 #include <phasefield/core/parameters.h>
 #include <sstream>
@@ -479,6 +480,10 @@ namespace PhaseField
   void
   read_parameter_file(ParameterHandler &prm, const std::string &filename)
   {
+    if (std::filesystem::exists(filename) &&
+        !std::filesystem::is_regular_file(filename))
+      throw InputError("The parameter file <" + filename +
+                       "> is not a regular file (a directory?).");
     std::ifstream file(filename);
     if (!file)
       throw InputError("Cannot open the parameter file <" + filename + ">.");

@@ -248,7 +248,8 @@ namespace PhaseField
   };
 
   /**
-   * Read @p filename into @p prm. Missing files, unknown parameters and
+   * Read @p filename into @p prm. Missing files, directories and other
+   * files that are not regular files, unknown parameters and
    * values that violate their pattern become an InputError with a message
    * that names the file and the parameter.
    */
