@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <iomanip>
+#include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
 
 namespace PhaseField
@@ -13,10 +14,18 @@ namespace PhaseField
     : n_columns(columns.size())
     , is_root(dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
   {
+    if (is_root)
+      file.open(filename);
+    // every rank throws, or none does: no rank waits for a failed root
+    const bool opened =
+      dealii::Utilities::MPI::broadcast(mpi_communicator,
+                                        is_root && static_cast<bool>(file),
+                                        0);
+    if (!opened)
+      throw InputError("Cannot write <" + filename +
+                       ">: check <Output directory>.");
     if (!is_root)
       return;
-    file.open(filename);
-    AssertThrow(file, dealii::ExcMessage("Cannot write <" + filename + ">."));
     for (std::size_t i = 0; i < columns.size(); ++i)
       file << (i ? "," : "") << columns[i];
     file << std::endl;
@@ -49,9 +58,17 @@ namespace PhaseField
   create_output_directory(const std::string &directory,
                           const MPI_Comm     mpi_communicator)
   {
+    bool created = false;
     if (dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::filesystem::create_directories(directory);
-    MPI_Barrier(mpi_communicator);
+      {
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
+        created = std::filesystem::is_directory(directory, error);
+      }
+    // every rank throws, or none does: no rank waits for a failed root
+    if (!dealii::Utilities::MPI::broadcast(mpi_communicator, created, 0))
+      throw InputError("Cannot create the directory <" + directory +
+                       "> given in <Output directory>.");
   }
 
 
