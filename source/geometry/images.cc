@@ -7,6 +7,9 @@
 #include <limits>
 #include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -136,19 +139,35 @@ namespace PhaseField
                          "> given in <Geometry / Image file> is not a "
                          "readable PNG image.");
       reader->SetFileName(filename.c_str());
+      // VTK reports corrupt data through its error events, not exceptions
+      bool                       read_error = false;
+      vtkNew<vtkCallbackCommand> error_observer;
+      error_observer->SetClientData(&read_error);
+      error_observer->SetCallback(
+        [](vtkObject *, unsigned long, void *client_data, void *) {
+          *static_cast<bool *>(client_data) = true;
+        });
+      reader->AddObserver(vtkCommand::ErrorEvent, error_observer);
+      reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent,
+                                          error_observer);
       reader->Update();
       vtkImageData *image = reader->GetOutput();
-      int           dims[3];
+      if (read_error || reader->GetErrorCode() != 0)
+        throw InputError("The image file <" + filename +
+                         "> given in <Geometry / Image file> is a damaged "
+                         "PNG image: its data could not be decoded.");
+      int dims[3];
       image->GetDimensions(dims);
       if (dims[0] < 2 || dims[1] < 2)
         throw InputError("The image file <" + filename +
                          "> given in <Geometry / Image file> could not be "
                          "read or has fewer than 2 x 2 pixels.");
-      nx                         = dims[0];
-      ny                         = dims[1];
-      pixel_size                 = 1. / std::max(nx, ny);
-      const int    n_components  = image->GetNumberOfScalarComponents();
-      const int    n_color       = std::min(n_components, 3);
+      nx                     = dims[0];
+      ny                     = dims[1];
+      pixel_size             = 1. / std::max(nx, ny);
+      const int n_components = image->GetNumberOfScalarComponents();
+      // gray (+ alpha): the gray value; RGB (+ alpha): the mean of RGB
+      const int    n_color       = n_components <= 2 ? 1 : 3;
       const double maximum_value = image->GetScalarTypeMax();
 
       // VTK's image rows run from the bottom, like y
