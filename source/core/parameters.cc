@@ -1,7 +1,9 @@
 #include <cmath>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
 #include <fstream>
 #include <phasefield/core/parameters.h>
 #include <sstream>
@@ -165,7 +167,10 @@ namespace PhaseField
                       "true",
                       Patterns::Bool(),
                       "true: narrow band of finest cells around the "
-                      "interface; false: uniform mesh at Finest level.");
+                      "interface; false: uniform mesh at Finest level, "
+                      "2^(d Finest level) cells; more than 2^24 cells per "
+                      "MPI rank (about 16 GB per rank at 1 KB per cell) "
+                      "are rejected.");
     prm.declare_entry("Band width",
                       "4",
                       Patterns::Double(0.5),
@@ -253,10 +258,12 @@ namespace PhaseField
                       "Number of outer time steps.");
     prm.declare_entry("Ramp-up steps",
                       "0",
-                      Patterns::Integer(0),
+                      Patterns::Integer(0, max_ramp_steps),
                       "Start-up from rough initial data: this many extra "
                       "steps come first, of sizes Tau/2^n, ..., Tau/4, "
-                      "Tau/2 (n = Ramp-up steps), then Number of steps "
+                      "Tau/2 (n = Ramp-up steps, at most 30, so that "
+                      "Tau/2^n stays far from underflow), then Number of "
+                      "steps "
                       "steps of size Tau. With Tau much larger than "
                       "Inner tau^2 the first step from non-smooth data is "
                       "a hard nonlinear problem whatever its size (halving "
@@ -515,6 +522,31 @@ namespace PhaseField
     output.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     model.evaluate(mesh.h());
+    check_uniform_mesh_size();
+  }
+
+
+
+  void
+  WillmoreParameters::check_uniform_mesh_size() const
+  {
+    if (mesh.adaptive)
+      return;
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const double n_cells = std::ldexp(1.0, dimension * mesh.finest_level);
+    if (n_cells <= max_uniform_cells_per_rank * n_ranks)
+      return;
+    const double gigabytes = n_cells * bytes_per_cell / n_ranks / 1e9;
+    throw InputError(
+      "<Mesh / Finest level> = " + std::to_string(mesh.finest_level) +
+      " with <Mesh / Adaptive> = false is a uniform mesh of " +
+      std::to_string(static_cast<unsigned long long>(n_cells)) + " cells (" +
+      std::to_string(static_cast<unsigned long long>(n_cells / n_ranks)) +
+      " per rank on " + std::to_string(n_ranks) + " rank(s), about " +
+      std::to_string(static_cast<long long>(std::ceil(gigabytes))) +
+      " GB per rank at 1 KB per cell); the limit is 2^24 cells per rank. "
+      "Use a smaller level, Adaptive = true, or more ranks.");
   }
 
 
@@ -522,6 +554,10 @@ namespace PhaseField
   void
   read_parameter_file(ParameterHandler &prm, const std::string &filename)
   {
+    if (std::filesystem::exists(filename) &&
+        !std::filesystem::is_regular_file(filename))
+      throw InputError("The parameter file <" + filename +
+                       "> is not a regular file (a directory?).");
     std::ifstream file(filename);
     if (!file)
       throw InputError("Cannot open the parameter file <" + filename + ">.");

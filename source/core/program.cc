@@ -8,6 +8,173 @@ namespace PhaseField
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** Exit status of a successful run. */
+    constexpr int exit_success = 0;
+    /** Exit status of a run stopped by an error that is not an InputError. */
+    constexpr int exit_error = 1;
+    /** Exit status of a run stopped by an InputError. */
+    constexpr int exit_input_error = 2;
+
+    /** What the command line asks for. */
+    struct CommandLine
+    {
+      bool                     help = false;
+      std::string              parameter_file;
+      std::vector<std::string> settings;
+    };
+
+    std::string
+    usage(const std::string &program_name)
+    {
+      return "Usage: " + program_name +
+             " [--help] [--set \"Subsection/Name=value\"]... "
+             "[<parameter file>]";
+    }
+
+    /** Parse the arguments; a malformed command line is an InputError. */
+    CommandLine
+    parse_command_line(const int          argc,
+                       char             **argv,
+                       const std::string &program_name)
+    {
+      CommandLine command_line;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string argument = argv[i];
+          if (argument == "--help" || argument == "-h")
+            command_line.help = true;
+          else if (argument == "--set" && i + 1 < argc)
+            command_line.settings.emplace_back(argv[++i]);
+          else if (argument.rfind("--set=", 0) == 0)
+            command_line.settings.push_back(argument.substr(6));
+          else if (!argument.empty() && argument[0] == '-')
+            throw InputError("Unknown or incomplete option <" + argument +
+                             "> on the command line. " + usage(program_name));
+          else if (command_line.parameter_file.empty())
+            command_line.parameter_file = argument;
+          else
+            throw InputError("More than one parameter file on the command "
+                             "line (<" +
+                             command_line.parameter_file + "> and <" +
+                             argument + ">). " + usage(program_name));
+        }
+      return command_line;
+    }
+
+    /** @p text without leading and trailing white space. */
+    std::string
+    trim(const std::string &text)
+    {
+      const std::size_t first = text.find_first_not_of(" \t");
+      if (first == std::string::npos)
+        return "";
+      return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+    }
+
+    /**
+     * Apply one `--set "Subsection/Name=value"` to @p prm: an unknown
+     * subsection or parameter, or a value that violates the pattern of the
+     * parameter, is an InputError that names it.
+     */
+    void
+    apply_setting(ParameterHandler &prm, const std::string &setting)
+    {
+      const std::size_t equals = setting.find('=');
+      if (equals == std::string::npos)
+        throw InputError("--set <" + setting +
+                         "> is not of the form \"Subsection/Name=value\".");
+      std::vector<std::string> path;
+      std::istringstream       parts(setting.substr(0, equals));
+      for (std::string part; std::getline(parts, part, '/');)
+        path.push_back(trim(part));
+      const std::string name  = path.back();
+      const std::string value = trim(setting.substr(equals + 1));
+      path.pop_back();
+      std::string full_name;
+      for (const std::string &subsection : path)
+        full_name += subsection + " / ";
+      full_name += name;
+      if (!path.empty() && !prm.subsection_path_exists(path))
+        throw InputError("--set <" + setting + ">: there is no subsection <" +
+                         full_name.substr(0, full_name.rfind(" / ")) +
+                         "> (see --help).");
+      for (const std::string &subsection : path)
+        prm.enter_subsection(subsection);
+      std::string error;
+      try
+        {
+          prm.set(name, value);
+        }
+      catch (const ParameterHandler::ExcEntryUndeclared &)
+        {
+          error = "there is no parameter <" + full_name + "> (see --help)";
+        }
+      catch (const ExceptionBase &)
+        {
+          error = "the value <" + value +
+                  "> does not match the pattern of the parameter <" +
+                  full_name + ">";
+        }
+      for (std::size_t i = 0; i < path.size(); ++i)
+        prm.leave_subsection();
+      if (!error.empty())
+        throw InputError("--set <" + setting + ">: " + error + ".");
+    }
+
+    /** Print the usage, the options and every parameter. */
+    void
+    print_help(ParameterHandler &prm, const std::string &program_name)
+    {
+      std::cout
+        << usage(program_name) << "\n\n"
+        << "Reads the parameter file (without one: the built-in defaults "
+           "below) and runs.\n"
+           "--set \"Subsection/Name=value\" sets one parameter after the "
+           "parameter file\n"
+           "has been read, or on the defaults without a file. It may be "
+           "repeated (later\n"
+           "ones win); nested subsections are joined by '/', top-level "
+           "parameters have\n"
+           "none, e.g. --set \"Mesh/Finest level=5\" --set \"Output "
+           "directory=out\".\n"
+           "Exit status: 0 on success, 2 for invalid input (parameter "
+           "file, --set,\n"
+           "command line, input files), 1 for any other error (e.g. "
+           "Newton's method failed).\n\n"
+        << "Parameters (with defaults and documentation):\n\n";
+      prm.print_parameters(std::cout, ParameterHandler::PRM);
+    }
+
+    /** Read the file and the settings of @p command_line, print the result. */
+    void
+    read_parameters(ParameterHandler  &prm,
+                    const CommandLine &command_line,
+                    const bool         root)
+    {
+      if (!command_line.parameter_file.empty())
+        read_parameter_file(prm, command_line.parameter_file);
+      for (const std::string &setting : command_line.settings)
+        apply_setting(prm, setting);
+      if (!root)
+        return;
+      std::cout << (command_line.parameter_file.empty() ?
+                      "No parameter file given: running the built-in "
+                      "default (see --help)" :
+                      "Parameters read from " + command_line.parameter_file);
+      for (const std::string &setting : command_line.settings)
+        std::cout << "\n  with --set \"" << setting << "\"";
+      std::cout << ":\n";
+      prm.print_parameters(std::cout,
+                           ParameterHandler::ShortPRM |
+                             ParameterHandler::KeepDeclarationOrder);
+      std::cout << std::endl;
+    }
+  } // namespace
+
+
+
   int
   run_program(int                                            argc,
               char                                         **argv,
@@ -20,33 +187,17 @@ namespace PhaseField
     ParameterHandler prm;
     declare(prm);
 
-    const std::string first = argc > 1 ? argv[1] : "";
-    if (argc > 2 || first == "--help" || first == "-h")
-      {
-        if (root)
-          {
-            std::cout << "Usage: " << program_name << " <parameter file>\n\n"
-                      << "Parameters (with defaults and documentation):\n\n";
-            prm.print_parameters(std::cout, ParameterHandler::PRM);
-          }
-        return (argc == 2) ? 0 : 1;
-      }
-
     try
       {
-        if (argc == 2)
-          read_parameter_file(prm, first);
-        if (root)
+        const CommandLine command_line =
+          parse_command_line(argc, argv, program_name);
+        if (command_line.help)
           {
-            std::cout << (argc == 2 ? "Parameters read from " + first :
-                                      "No parameter file given: running "
-                                      "the built-in default (see --help)")
-                      << ":\n";
-            prm.print_parameters(std::cout,
-                                 ParameterHandler::ShortPRM |
-                                   ParameterHandler::KeepDeclarationOrder);
-            std::cout << std::endl;
+            if (root)
+              print_help(prm, program_name);
+            return exit_success;
           }
+        read_parameters(prm, command_line, root);
         run(prm);
       }
     catch (const InputError &error)
@@ -55,7 +206,7 @@ namespace PhaseField
           std::cerr << "\n"
                     << program_name << ": input error: " << error.what() << "\n"
                     << std::endl;
-        return 2;
+        return exit_input_error;
       }
     catch (const ExceptionBase &exc)
       {
@@ -66,15 +217,15 @@ namespace PhaseField
             std::cerr << "\n"
                       << program_name << ": error: " << info.str() << std::endl;
           }
-        return 1;
+        return exit_error;
       }
     catch (const std::exception &exc)
       {
         if (root)
           std::cerr << "\n"
                     << program_name << ": error: " << exc.what() << std::endl;
-        return 1;
+        return exit_error;
       }
-    return 0;
+    return exit_success;
   }
 } // namespace PhaseField

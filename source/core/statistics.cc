@@ -61,7 +61,8 @@ namespace PhaseField
     run_on_root(mpi_communicator, [&]() {
       file.open(filename);
       if (!file)
-        throw std::runtime_error("Cannot write <" + filename + ">.");
+        throw InputError("Cannot write <" + filename +
+                         ">: check <Output directory>.");
       file << header(columns) << std::endl;
     });
   }
@@ -156,9 +157,17 @@ namespace PhaseField
   create_output_directory(const std::string &directory,
                           const MPI_Comm     mpi_communicator)
   {
+    bool created = false;
     if (dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::filesystem::create_directories(directory);
-    MPI_Barrier(mpi_communicator);
+      {
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
+        created = std::filesystem::is_directory(directory, error);
+      }
+    // every rank throws, or none does: no rank waits for a failed root
+    if (!dealii::Utilities::MPI::broadcast(mpi_communicator, created, 0))
+      throw InputError("Cannot create the directory <" + directory +
+                       "> given in <Output directory>.");
   }
 
 

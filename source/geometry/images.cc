@@ -1,12 +1,18 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -97,6 +103,59 @@ namespace PhaseField
         return d;
       }
 
+      /** CRC-32 of PNG chunks (ISO 3309, as in the PNG specification). */
+      std::uint32_t
+      png_crc(const std::string &bytes)
+      {
+        constexpr std::uint32_t polynomial = 0xedb88320u;
+        std::uint32_t           crc        = 0xffffffffu;
+        for (const unsigned char byte : bytes)
+          {
+            crc ^= byte;
+            for (int bit = 0; bit < 8; ++bit)
+              crc = (crc >> 1) ^ (polynomial & (0u - (crc & 1u)));
+          }
+        return crc ^ 0xffffffffu;
+      }
+
+      /**
+       * True if every chunk of the PNG file @p filename is complete and
+       * has the right CRC, and the file ends with IEND after an IDAT
+       * chunk. VTK's reader crashes on some corrupt files, so they are
+       * rejected before it sees them.
+       */
+      bool
+      png_chunks_intact(const std::string &filename)
+      {
+        constexpr std::size_t signature_size = 8;
+        std::ifstream         file(filename, std::ios::binary);
+        const std::string     data((std::istreambuf_iterator<char>(file)),
+                               std::istreambuf_iterator<char>());
+        const auto            read_uint32 = [&](const std::size_t at) {
+          std::uint32_t value = 0;
+          for (std::size_t i = 0; i < 4; ++i)
+            value = (value << 8) | static_cast<unsigned char>(data[at + i]);
+          return value;
+        };
+        bool        has_data = false;
+        std::size_t at       = signature_size;
+        while (at + 12 <= data.size())
+          {
+            const std::size_t length = read_uint32(at);
+            if (length > data.size() - at - 12)
+              return false;
+            const std::string type_and_data = data.substr(at + 4, length + 4);
+            if (png_crc(type_and_data) != read_uint32(at + 8 + length))
+              return false;
+            const std::string type = type_and_data.substr(0, 4);
+            has_data               = has_data || type == "IDAT";
+            if (type == "IEND")
+              return has_data;
+            at += length + 12;
+          }
+        return false;
+      }
+
       /** Two sizes from `Geometry / Sizes` for @p shape. */
       std::vector<double>
       two_sizes(const GeometryParameters &geometry, const std::string &shape)
@@ -135,20 +194,41 @@ namespace PhaseField
         throw InputError("The image file <" + filename +
                          "> given in <Geometry / Image file> is not a "
                          "readable PNG image.");
+      if (!png_chunks_intact(filename))
+        throw InputError("The image file <" + filename +
+                         "> given in <Geometry / Image file> is a damaged "
+                         "PNG image (truncated, or a chunk with a wrong "
+                         "checksum).");
       reader->SetFileName(filename.c_str());
+      // VTK reports corrupt data through its error events, not exceptions
+      bool                       read_error = false;
+      vtkNew<vtkCallbackCommand> error_observer;
+      error_observer->SetClientData(&read_error);
+      error_observer->SetCallback(
+        [](vtkObject *, unsigned long, void *client_data, void *) {
+          *static_cast<bool *>(client_data) = true;
+        });
+      reader->AddObserver(vtkCommand::ErrorEvent, error_observer);
+      reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent,
+                                          error_observer);
       reader->Update();
       vtkImageData *image = reader->GetOutput();
-      int           dims[3];
+      if (read_error || reader->GetErrorCode() != 0)
+        throw InputError("The image file <" + filename +
+                         "> given in <Geometry / Image file> is a damaged "
+                         "PNG image: its data could not be decoded.");
+      int dims[3];
       image->GetDimensions(dims);
       if (dims[0] < 2 || dims[1] < 2)
         throw InputError("The image file <" + filename +
                          "> given in <Geometry / Image file> could not be "
                          "read or has fewer than 2 x 2 pixels.");
-      nx                         = dims[0];
-      ny                         = dims[1];
-      pixel_size                 = 1. / std::max(nx, ny);
-      const int    n_components  = image->GetNumberOfScalarComponents();
-      const int    n_color       = std::min(n_components, 3);
+      nx                     = dims[0];
+      ny                     = dims[1];
+      pixel_size             = 1. / std::max(nx, ny);
+      const int n_components = image->GetNumberOfScalarComponents();
+      // gray (+ alpha): the gray value; RGB (+ alpha): the mean of RGB
+      const int    n_color       = n_components <= 2 ? 1 : 3;
       const double maximum_value = image->GetScalarTypeMax();
 
       // VTK's image rows run from the bottom, like y

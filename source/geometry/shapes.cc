@@ -129,6 +129,44 @@ namespace PhaseField
 
 
 
+      /** Sample points per direction of check_finite_on_grid(). */
+      constexpr unsigned int n_check_points = 33;
+
+      /**
+       * Throw an InputError naming <Geometry / Expression> if @p distance
+       * is not finite at one of n_check_points^dim uniform points of
+       * [0,1]^dim (e.g. sqrt(x-0.5)-0.2, NaN for x < 0.5).
+       */
+      template <int dim>
+      void
+      check_finite_on_grid(const Function<dim> &distance,
+                           const std::string   &expression)
+      {
+        const unsigned int n_points =
+          Utilities::fixed_power<dim>(n_check_points);
+        for (unsigned int i = 0; i < n_points; ++i)
+          {
+            Point<dim>   p;
+            unsigned int index = i;
+            for (unsigned int d = 0; d < dim; ++d, index /= n_check_points)
+              p[d] = double(index % n_check_points) / (n_check_points - 1);
+            const double value = distance.value(p);
+            if (!std::isfinite(value))
+              {
+                std::ostringstream where;
+                where << p;
+                throw InputError("The parameter <Geometry / Expression> = <" +
+                                 expression + "> is not finite at (" +
+                                 where.str() +
+                                 "): it must be a finite "
+                                 "signed distance everywhere in [0,1]^" +
+                                 std::to_string(dim) + ".");
+              }
+          }
+      }
+
+
+
       /** Signed distance as a muParser expression in x, y (, z). */
       template <int dim>
       std::unique_ptr<Function<dim>>
@@ -153,6 +191,7 @@ namespace PhaseField
                              FunctionParser<dim>::default_variable_names() +
                              ": " + info.str());
           }
+        check_finite_on_grid(*parser, expression);
         return parser;
       }
     } // namespace

@@ -55,7 +55,7 @@ namespace PhaseField
                       Patterns::Anything(),
                       "Box x0, y0, x1, y1 removed from the initial shape "
                       "(set to the outside phase): the destroyed part of the "
-                      "image. Empty: no damage. Should lie inside Region.");
+                      "image. Empty: no damage. Must lie inside Region.");
     prm.declare_entry("Picture resolution",
                       "512",
                       Patterns::Integer(16, 4096),
@@ -100,6 +100,13 @@ namespace PhaseField
     if (!(threshold > 0 && threshold < 1))
       throw InputError("<Geometry / Threshold> must lie in (0, 1), but is " +
                        std::to_string(threshold) + ".");
+    if (!damage.empty() && (damage.lower[0] < region.lower[0] ||
+                            damage.lower[1] < region.lower[1] ||
+                            damage.upper[0] > region.upper[0] ||
+                            damage.upper[1] > region.upper[1]))
+      throw InputError("<Restoration / Damage> must lie inside <Restoration / "
+                       "Region>: outside the region U is held at the damaged "
+                       "image, so the damage there could not be restored.");
     const double coarse_h =
       std::ldexp(1.0, -static_cast<int>(mesh.coarsest_level));
     for (const double x :

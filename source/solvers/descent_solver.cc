@@ -203,8 +203,18 @@ namespace PhaseField
 
       for (unsigned int it = 1; it <= control.max_iterations; ++it)
         {
-          report.newton_iterations  = it;
-          const Direction direction = find_descent_direction(it);
+          report.newton_iterations = it;
+          Direction direction      = Direction::none;
+          try
+            {
+              direction = find_descent_direction(it);
+            }
+          catch (const ExceptionBase &exc)
+            {
+              // a Krylov solve is collective: it fails on all ranks
+              internal::print_linear_solver_failure(pcout, it, exc);
+              return report;
+            }
           if (direction != Direction::descent)
             {
               report.converged = (direction == Direction::stationary);

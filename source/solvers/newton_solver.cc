@@ -100,8 +100,18 @@ namespace PhaseField
             it == 1 ? first_linear_tolerance :
                       std::min(first_linear_tolerance,
                                linear_safety_factor * target / norm));
-        const unsigned int linear_iterations =
-          system.solve_jacobian(z, residual, update, linear_solver);
+        unsigned int linear_iterations = 0;
+        try
+          {
+            linear_iterations =
+              system.solve_jacobian(z, residual, update, linear_solver);
+          }
+        catch (const ExceptionBase &exc)
+          {
+            // a Krylov solve is collective: it fails on all ranks
+            internal::print_linear_solver_failure(pcout, it, exc);
+            return report;
+          }
         report.linear_iterations += linear_iterations;
         report.newton_iterations = it;
 

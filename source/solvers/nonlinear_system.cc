@@ -1,5 +1,6 @@
 #include <cmath>
 #include <phasefield/solvers/nonlinear_system.h>
+#include <sstream>
 
 namespace PhaseField
 {
@@ -52,6 +53,21 @@ namespace PhaseField
       pcout << "    Newton did not reach the tolerance in "
             << control.max_iterations << " iterations (residual " << norm
             << ", target " << target << ")." << std::endl;
+    }
+
+
+
+    void
+    print_linear_solver_failure(const ConditionalOStream &pcout,
+                                const unsigned int        iteration,
+                                const ExceptionBase      &exc)
+    {
+      std::ostringstream info;
+      exc.print_info(info);
+      pcout << "    Newton iteration " << iteration
+            << ": the linear solver failed, the Newton solve did not "
+               "converge: "
+            << info.str() << std::endl;
     }
   } // namespace internal
 } // namespace PhaseField

@@ -308,6 +308,17 @@ namespace PhaseField
     const double   dofs  = double(scheme.n_fields()) * discretization.n_dofs();
     const double   cells =
       discretization.get_triangulation().n_global_active_cells();
+    // no NaN in statistics.csv or the VTU output: stop before writing
+    AssertThrow(std::isfinite(e.willmore) && std::isfinite(e.area) &&
+                  std::isfinite(e.inside_measure),
+                ExcMessage("Step " + std::to_string(step) +
+                           ": an energy or the inside measure is not finite "
+                           "(Willmore " +
+                           std::to_string(e.willmore) + ", area " +
+                           std::to_string(e.area) + ", inside " +
+                           std::to_string(e.inside_measure) +
+                           "); nothing of this step was written. Try a "
+                           "smaller <Time stepping / Tau>."));
     statistics->add_row(concatenate<double>({double(step),
                                              time,
                                              double(report.newton_iterations),

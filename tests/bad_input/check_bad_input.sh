@@ -1,17 +1,30 @@
 #!/bin/sh
-# Usage: check_bad_input.sh <program> <prm file> <pattern>
-# Passes if <program> exits with a non-zero status, prints an error message
-# matching <pattern> (grep -E), and neither crashes nor hangs.
-program="$1"; prm="$2"; pattern="$3"
-output=$(timeout 60 "$program" "$prm" 2>&1)
-status=$?
-if [ $status -eq 0 ]; then
-  echo "FAIL: exit status 0 for $prm"; exit 1
+# Usage: check_bad_input.sh <ranks> <mpiexec> <pattern> <program> [args...]
+# Runs <program> [args...] on <ranks> ranks (1: without <mpiexec>) and
+# passes if it exits with status 2 (the status of an input error, see
+# run_program()), prints an error message matching <pattern> (grep -E),
+# and neither crashes nor hangs (each run is limited to 60 s).
+ranks="$1"; mpiexec="$2"; pattern="$3"; shift 3
+time_limit=60
+expected_status=2
+if [ "$ranks" -eq 1 ]; then
+  output=$(OMP_NUM_THREADS=1 timeout $time_limit "$@" 2>&1)
+else
+  output=$(OMP_NUM_THREADS=1 timeout $time_limit "$mpiexec" \
+    --allow-run-as-root --oversubscribe -n "$ranks" "$@" 2>&1)
 fi
-if [ $status -ge 124 ]; then
-  echo "FAIL: timeout or crash (status $status) for $prm"; echo "$output"; exit 1
+status=$?
+if [ $status -eq 124 ]; then
+  echo "FAIL: timeout after $time_limit s on $ranks rank(s): $*"
+  echo "$output"; exit 1
+fi
+if [ $status -ne $expected_status ]; then
+  echo "FAIL: exit status $status (expected $expected_status) on $ranks" \
+    "rank(s): $*"
+  echo "$output"; exit 1
 fi
 if ! printf '%s' "$output" | grep -Eq "$pattern"; then
   echo "FAIL: message does not match <$pattern>:"; echo "$output"; exit 1
 fi
-echo "OK: $prm exits with status $status and the expected message"
+echo "OK: $* exits with status $status on $ranks rank(s) and the expected" \
+  "message"

@@ -246,9 +246,20 @@ namespace PhaseField
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /** Largest value of `Time stepping / Ramp-up steps`. */
+  constexpr unsigned int max_ramp_steps = 30;
+
   /** All parameters of willmore_flow. */
   struct WillmoreParameters
   {
+    /**
+     * Largest uniform mesh (`Mesh / Adaptive = false`) per MPI rank:
+     * 2^24 cells, about 16 GB at bytes_per_cell.
+     */
+    static constexpr double max_uniform_cells_per_rank = 16777216.;
+    /** Memory estimate per cell of a run (matrices, vectors, mesh). */
+    static constexpr double bytes_per_cell = 1024.;
+
     unsigned int           dimension;
     std::string            output_directory;
     GeometryParameters     geometry;
@@ -266,10 +277,19 @@ namespace PhaseField
                        const std::string        &extra_documentation = "");
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Throw an InputError giving the number of cells and the memory
+     * estimate if a uniform mesh has more than max_uniform_cells_per_rank
+     * cells per MPI rank (of MPI_COMM_WORLD).
+     */
+    void
+    check_uniform_mesh_size() const;
   };
 
   /**
-   * Read @p filename into @p prm. Missing files, unknown parameters and
+   * Read @p filename into @p prm. Missing files, directories and other
+   * files that are not regular files, unknown parameters and
    * values that violate their pattern become an InputError with a message
    * that names the file and the parameter.
    */

@@ -13,7 +13,9 @@ namespace PhaseField
   /**
    * A CSV table written row by row on rank 0 (flushed after every row, so
    * a long run can be watched with `tail -f`). Values are written with
-   * 10 significant digits; NaN is written as `nan`.
+   * 10 significant digits; NaN is written as `nan`. The constructor is
+   * collective: if rank 0 cannot open the file, every rank throws an
+   * InputError.
    */
   class StatisticsFile
   {
@@ -66,7 +68,8 @@ namespace PhaseField
 
   /**
    * Create the output directory @p directory on rank 0; every rank
-   * returns once it exists. Collective.
+   * returns once it exists, or every rank throws an InputError naming
+   * <Output directory> if it cannot be created. Collective.
    */
   void
   create_output_directory(const std::string &directory,

@@ -149,6 +149,17 @@ namespace PhaseField
                          const NewtonControl              &control,
                          const double                      norm,
                          const double                      target);
+
+    /**
+     * The message of a Newton method whose linear solver failed (e.g.
+     * dealii::SolverControl::NoConvergence) in iteration @p iteration; the
+     * Newton solve then reports `converged = false`, so that the time loop
+     * retries with half the step.
+     */
+    void
+    print_linear_solver_failure(const dealii::ConditionalOStream &pcout,
+                                const unsigned int                iteration,
+                                const dealii::ExceptionBase      &exc);
   } // namespace internal
 } // namespace PhaseField
 

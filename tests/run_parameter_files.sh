@@ -1,0 +1,43 @@
+#!/bin/sh
+# Usage: run_parameter_files.sh <source directory> <build directory>
+# Runs every shipped parameter file parameter_files/<program>/*.prm through
+# build/<program> with --set options that make it small (level 5, two
+# steps, epsilon = 4h; biharmonic_flow: levels 3 and 4), then the demo (willmore_flow
+# without arguments, shortened by --set) and scripts/plot_statistics.py on
+# its output. Passes if every run exits with status 0. Runs in the source
+# directory, since the files name their images relative to it.
+source_dir="$1"; build_dir="$2"
+output=$(mktemp -d)
+trap 'rm -rf "$output"' EXIT
+cd "$source_dir" || exit 1
+failed=0
+run() {
+  echo "== $*"
+  if ! OMP_NUM_THREADS=1 timeout 120 "$@" > "$output/log" 2>&1; then
+    echo "FAIL (status $?): $*"; tail -20 "$output/log"; failed=1
+  fi
+}
+for prm in parameter_files/*/*.prm; do
+  program=$(basename "$(dirname "$prm")")
+  case "$program" in
+    biharmonic_flow)
+      run "$build_dir/$program" "$prm" --set "Convergence/Levels=3,4" \
+        --set "Output directory=$output/run" ;;
+    *)
+      run "$build_dir/$program" "$prm" --set "Mesh/Finest level=5" \
+        --set "Time stepping/Number of steps=2" \
+        --set "Time stepping/Ramp-up steps=0" \
+        --set "Phase field/Epsilon=4*h" \
+        --set "Output directory=$output/run" ;;
+  esac
+done
+run "$build_dir/willmore_flow" --set "Time stepping/Number of steps=3" \
+  --set "Output directory=$output/demo"
+if python3 -c "import matplotlib" 2> /dev/null; then
+  run python3 scripts/plot_statistics.py "$output/demo"
+  [ -f "$output/demo/energies.png" ] || { echo "FAIL: no energies.png"; failed=1; }
+else
+  echo "SKIP: scripts/plot_statistics.py (python3-matplotlib is not installed)"
+fi
+[ $failed -eq 0 ] && echo "OK: every parameter file and the demo ran"
+exit $failed
