@@ -33,8 +33,9 @@ for prm in parameter_files/*/*.prm; do
 done
 run "$build_dir/willmore_flow" --set "Time stepping/Number of steps=3" \
   --set "Output directory=$output/demo"
-if python3 -c "import matplotlib" 2> /dev/null; then
-  run python3 scripts/plot_statistics.py "$output/demo"
+# Debian's python3 with python3-matplotlib, as in the README
+if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+  run /usr/bin/python3 scripts/plot_statistics.py "$output/demo"
   [ -f "$output/demo/energies.png" ] || { echo "FAIL: no energies.png"; failed=1; }
 else
   echo "SKIP: scripts/plot_statistics.py (python3-matplotlib is not installed)"
