@@ -2,6 +2,7 @@
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
 #include <phasefield/time/checkpoint.h>
+#include <phasefield/time/finite_fields.h>
 #include <phasefield/time/time_loop.h>
 
 namespace PhaseField
@@ -362,6 +363,7 @@ namespace PhaseField
     for (unsigned int b = 0; b < names.size(); ++b)
       fields.emplace_back(names[b], &state.block(b));
     fields.emplace_back("curvature", &curvature);
+    check_output_fields_finite(step, fields);
     discretization.write_output(settings.output_directory, step, time, fields);
   }
 

@@ -1,0 +1,27 @@
+#ifndef phasefield_time_finite_fields_h
+#define phasefield_time_finite_fields_h
+
+#include <deal.II/lac/trilinos_vector.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PhaseField
+{
+  /**
+   * Stop before output that would contain NaN or Inf: throws (on every
+   * rank, the count is summed over the vectors' communicator) a
+   * dealii::ExceptionBase whose message names step @p step, the first
+   * field of @p fields with a non-finite entry, the number of such entries
+   * and the parameter to change, if any entry of any field is not finite.
+   * Collective.
+   */
+  void
+  check_output_fields_finite(
+    const unsigned int step,
+    const std::vector<
+      std::pair<std::string, const dealii::TrilinosWrappers::MPI::Vector *>>
+      &fields);
+} // namespace PhaseField
+
+#endif
