@@ -111,7 +111,14 @@ namespace Testing
     return columns;
   }
 
-  /** Print the named columns of @p rows with 6 significant digits. */
+  /**
+   * Significant digits of the values in statistics.csv (StatisticsFile),
+   * all of which the tables of the tests print: the tolerances of numdiff
+   * are set per test in tests/<name>.numdiff, not by rounding.
+   */
+  constexpr int statistics_digits = 10;
+
+  /** Print the named columns of @p rows with all digits of the file. */
   inline void
   print_columns(const std::vector<std::vector<double>> &rows,
                 const std::vector<std::string>         &header,
@@ -120,12 +127,14 @@ namespace Testing
     for (const auto &c : columns)
       log() << c << ' ';
     log() << '\n';
+    const auto precision = log().precision(statistics_digits);
     for (const auto &row : rows)
       {
         for (const auto &c : columns)
           log() << row[column(header, c)] << ' ';
         log() << '\n';
       }
+    log().precision(precision);
   }
 } // namespace Testing
 
