@@ -1,0 +1,48 @@
+#!/bin/sh
+# Usage: linear_solver_failure.sh <ranks> <mpiexec> <willmore_flow> <dir>
+# A linear-solver failure halves the time step instead of aborting the run
+# (doc/willmore_flow.md, "Newton's method"). The iterative solver limited
+# to 5 iterations fails in the first Newton iteration of the outer problem
+# (which needs more than 12 CG iterations here) but not in the inner
+# problem for V at step 0 (which converges with 2): step 1 must be tried
+# at tau, tau/2 and tau/4, each attempt reporting "the linear solver
+# failed", and the run must then stop with the documented message and exit
+# status 1, within 60 s, with statistics.csv complete up to step 0.
+ranks="$1"; mpiexec="$2"; program="$3"; directory="$4"
+time_limit=60
+expected_status=1
+rm -rf "$directory"
+set -- "$program" \
+  --set "Dimension=2" --set "Geometry/Shape=quarter circle" \
+  --set "Mesh/Finest level=5" --set "Mesh/Coarsest level=3" \
+  --set "Time stepping/Number of steps=2" \
+  --set "Linear solver/Type=iterative" \
+  --set "Linear solver/Maximum iterations=5" \
+  --set "Newton/Maximum step halvings=2" \
+  --set "Output directory=$directory"
+if [ "$ranks" -eq 1 ]; then
+  output=$(OMP_NUM_THREADS=1 timeout $time_limit "$@" 2>&1)
+else
+  output=$(OMP_NUM_THREADS=1 timeout $time_limit "$mpiexec" \
+    --allow-run-as-root --oversubscribe -n "$ranks" "$@" 2>&1)
+fi
+status=$?
+fail() { echo "FAIL on $ranks rank(s): $1"; echo "$output"; exit 1; }
+[ $status -eq 124 ] && fail "timeout after $time_limit s"
+[ $status -eq $expected_status ] ||
+  fail "exit status $status (expected $expected_status)"
+failures=$(printf '%s\n' "$output" | grep -c "the linear solver failed")
+[ "$failures" -eq 3 ] ||
+  fail "\"the linear solver failed\" printed $failures times (expected 3)"
+for tau in 0.000488 0.000244; do
+  printf '%s\n' "$output" | grep -q \
+    "step 1: Newton failed, retrying with half the time step, tau = $tau" ||
+    fail "no retry of step 1 with tau = $tau"
+done
+printf '%s\n' "$output" | grep -q "did not converge in step 1 even after halving the time step 2 times" ||
+  fail "no final message naming step 1 and the 2 halvings"
+rows=$(wc -l < "$directory/statistics.csv")
+[ "$rows" -eq 2 ] ||
+  fail "statistics.csv has $rows lines (expected the header and step 0)"
+echo "OK on $ranks rank(s): step 1 retried twice with half the step after" \
+  "linear-solver failures, then exit status $status with the message"
