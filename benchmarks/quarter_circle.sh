@@ -3,8 +3,10 @@
 # mesh at the given levels, nested scheme, 2 MPI ranks. Prints one table row
 # per run: level, mesh, cells, steps, mean/max Newton iterations, final
 # l2_error, radius error from inside_measure, wall seconds.
-# Usage: benchmarks/quarter_circle.sh [build dir] [levels...]
+# Usage: [MESHES="adaptive uniform"] benchmarks/quarter_circle.sh [build dir] [levels...]
 #   e.g. benchmarks/quarter_circle.sh build 7 8 9
+# MESHES (default "adaptive uniform") selects the meshes; uniform is never
+# run at level 9 and above.
 set -euo pipefail
 build=${1:-build}; shift || true
 levels=${*:-7 8}
@@ -12,7 +14,8 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 printf '%-5s %-8s %8s %5s %7s %4s %12s %12s %8s\n' level mesh cells steps newton max l2_error radius_err wall_s
 for level in $levels; do
-  for adaptive in true false; do
+  for mesh in ${MESHES:-adaptive uniform}; do
+    adaptive=$([ "$mesh" = uniform ] && echo false || echo true)
     [ "$adaptive" = false ] && [ "$level" -ge 9 ] && continue
     prm=$work/qc_${level}_${adaptive}.prm
     sed -e "s|set Output directory = .*|set Output directory = $work/out_${level}_${adaptive}|" \
