@@ -50,30 +50,19 @@ end
       const unsigned int n_steps,
       const bool         resume)
   {
-    dealii::ParameterHandler prm;
-    EdgeRestorationParameters::declare_parameters(prm);
-    prm.parse_input_from_string(
-      base_prm + "subsection Time stepping\n set Number of steps = " +
-      std::to_string(n_steps) + "\nend\nsubsection Checkpoint\n set Resume = " +
-      (resume ? "true" : "false") +
-      "\nend\nset Output directory = " + directory + "\n");
-    EdgeRestorationParameters parameters;
-    parameters.parse_parameters(prm);
-    RestorationProblem problem(parameters);
-    problem.run();
-    std::vector<double> norms;
-    for (unsigned int b = 0; b < problem.state().n_blocks(); ++b)
-      norms.push_back(problem.state().block(b).l2_norm());
-    MPI_Barrier(MPI_COMM_WORLD);
-    std::vector<std::string> header;
-    auto      rows = Testing::read_csv(directory + "/statistics.csv", header);
-    const int wall = Testing::column(header, "wall_seconds");
-    for (auto &row : rows)
+    Testing::RunResult r =
+      Testing::run_with_checkpoints<EdgeRestorationParameters,
+                                    RestorationProblem>(base_prm,
+                                                        directory,
+                                                        n_steps,
+                                                        resume);
+    const int wall = Testing::column(r.header, "wall_seconds");
+    for (auto &row : r.rows)
       row.erase(row.begin() + wall);
-    header.erase(header.begin() + wall);
+    r.header.erase(r.header.begin() + wall);
     if (directory == "uninterrupted")
-      Testing::check_restoration_table(rows, header);
-    return {rows, norms};
+      Testing::check_restoration_table(r.rows, r.header);
+    return {r.rows, r.field_norms};
   }
 
   /** Bitwise equality of two rows with NaN equal to NaN. */

@@ -44,13 +44,7 @@ subsection Checkpoint
 end
 )";
 
-  /** What a run leaves: its statistics and the l2 norms of its fields. */
-  struct RunResult
-  {
-    std::vector<std::string>         header;
-    std::vector<std::vector<double>> rows;
-    std::vector<double>              field_norms;
-  };
+  using Testing::RunResult;
 
   /** willmore_flow for @p n_steps steps into @p directory. */
   RunResult
@@ -58,24 +52,11 @@ end
       const unsigned int n_steps,
       const bool         resume)
   {
-    dealii::ParameterHandler prm;
-    WillmoreParameters::declare_parameters(prm);
-    prm.parse_input_from_string(
-      base_prm + "subsection Time stepping\n set Number of steps = " +
-      std::to_string(n_steps) + "\nend\nsubsection Checkpoint\n set Resume = " +
-      (resume ? "true" : "false") +
-      "\nend\nset Output directory = " + directory + "\n");
-    WillmoreParameters parameters;
-    parameters.parse_parameters(prm);
-    WillmoreProblem<2> problem(parameters);
-    problem.run();
-    RunResult result;
-    for (unsigned int b = 0; b < problem.state().n_blocks(); ++b)
-      result.field_norms.push_back(problem.state().block(b).l2_norm());
-    MPI_Barrier(MPI_COMM_WORLD);
-    result.rows =
-      Testing::read_csv(directory + "/statistics.csv", result.header);
-    return result;
+    return Testing::run_with_checkpoints<WillmoreParameters,
+                                         WillmoreProblem<2>>(base_prm,
+                                                             directory,
+                                                             n_steps,
+                                                             resume);
   }
 
   /**

@@ -252,4 +252,47 @@ namespace Testing
   }
 } // namespace Testing
 
+namespace Testing
+{
+  /** What a run leaves: its statistics and the l2 norms of its fields. */
+  struct RunResult
+  {
+    std::vector<std::string>         header;
+    std::vector<std::vector<double>> rows;
+    std::vector<double>              field_norms;
+  };
+
+  /**
+   * Run the program of @p Problem (constructed from @p Parameters) on
+   * @p base_prm for @p n_steps steps (Time stepping / Number of steps),
+   * resuming from a checkpoint if @p resume (Checkpoint / Resume), with
+   * output directory @p directory, as the checkpoint tests do.
+   */
+  template <typename Parameters, typename Problem>
+  RunResult
+  run_with_checkpoints(const std::string &base_prm,
+                       const std::string &directory,
+                       const unsigned int n_steps,
+                       const bool         resume)
+  {
+    dealii::ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    prm.parse_input_from_string(
+      base_prm + "subsection Time stepping\n set Number of steps = " +
+      std::to_string(n_steps) + "\nend\nsubsection Checkpoint\n set Resume = " +
+      (resume ? "true" : "false") +
+      "\nend\nset Output directory = " + directory + "\n");
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    Problem problem(parameters);
+    problem.run();
+    RunResult result;
+    for (unsigned int b = 0; b < problem.state().n_blocks(); ++b)
+      result.field_norms.push_back(problem.state().block(b).l2_norm());
+    MPI_Barrier(MPI_COMM_WORLD);
+    result.rows = read_csv(directory + "/statistics.csv", result.header);
+    return result;
+  }
+} // namespace Testing
+
 #endif
