@@ -59,6 +59,60 @@ namespace PhaseField
         }
       return b;
     }
+
+
+
+    /**
+     * Take the update that backtrack() found in Newton iteration @p it:
+     * z = @p trial and @p norm = its residual norm, the watchdog spent if
+     * the norm rose. False (and nothing changed) if no damped update was
+     * accepted.
+     */
+    bool
+    accept_update(const Backtracking                       &step,
+                  const unsigned int                        it,
+                  const NewtonControl                      &control,
+                  const ConditionalOStream                 &pcout,
+                  const TrilinosWrappers::MPI::BlockVector &trial,
+                  TrilinosWrappers::MPI::BlockVector       &z,
+                  double                                   &norm,
+                  bool                                     &watchdog_used)
+    {
+      if (step.damping > control.max_damping_steps)
+        {
+          pcout << "    Newton iteration " << it
+                << ": no damped update reduces the residual (residual " << norm
+                << ")." << std::endl;
+          return false;
+        }
+      if (step.damping > 0)
+        pcout << "    Newton iteration " << it << ": update damped by "
+              << step.lambda << std::endl;
+      if (step.norm >= norm)
+        watchdog_used = true;
+      z    = trial;
+      norm = step.norm;
+      return true;
+    }
+
+
+
+    /**
+     * Whether @p norm (after an iteration that started at @p previous_norm)
+     * reached @p target or stagnates at NewtonControl::roundoff_level.
+     */
+    bool
+    reached_target(const NewtonControl &control,
+                   const double         norm,
+                   const double         previous_norm,
+                   const double         target)
+    {
+      // at round-off the residual stagnates above a tight target
+      const bool stagnating = control.roundoff_level > 0 &&
+                              norm <= control.roundoff_level &&
+                              norm >= 0.5 * previous_norm;
+      return norm <= target || stagnating;
+    }
   } // namespace
 
 
@@ -115,7 +169,7 @@ namespace PhaseField
         report.linear_iterations += linear_iterations;
         report.newton_iterations = it;
 
-        const Backtracking step       = backtrack(system,
+        const Backtracking step          = backtrack(system,
                                             z,
                                             update,
                                             trial,
@@ -124,35 +178,17 @@ namespace PhaseField
                                             norm,
                                             target,
                                             !watchdog_used);
-        const unsigned int damping    = step.damping;
-        const double       lambda     = step.lambda;
-        const double       trial_norm = step.norm;
-        if (damping > control.max_damping_steps)
-          {
-            pcout << "    Newton iteration " << it
-                  << ": no damped update reduces the residual (residual "
-                  << norm << ")." << std::endl;
-            return report;
-          }
-        if (damping > 0)
-          pcout << "    Newton iteration " << it << ": update damped by "
-                << lambda << std::endl;
-        if (trial_norm >= norm)
-          watchdog_used = true;
-        const double previous_norm = norm;
-        z                          = trial;
-        norm                       = trial_norm;
+        const double       previous_norm = norm;
+        if (!accept_update(
+              step, it, control, pcout, trial, z, norm, watchdog_used))
+          return report;
         report.final_residual_norm = norm;
         if (verbose)
           pcout << "    Newton " << it << ": residual " << norm << " ("
                 << linear_iterations << " linear iterations, "
                 << linear_solver.n_factorizations() << " factorizations)"
                 << std::endl;
-        // at round-off the residual stagnates above a tight target
-        const bool stagnating = control.roundoff_level > 0 &&
-                                norm <= control.roundoff_level &&
-                                norm >= 0.5 * previous_norm;
-        if (norm <= target || stagnating)
+        if (reached_target(control, norm, previous_norm, target))
           {
             report.converged = true;
             return report;
