@@ -1,3 +1,4 @@
+#include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/contour_parameters.h>
 
 namespace PhaseField
@@ -211,6 +212,15 @@ namespace PhaseField
       throw InputError("shape_from_contour needs <Time stepping / Scheme> = "
                        "nested: the Willmore and area weights of its "
                        "regularisation are part of the nested scheme only.");
+    // a target shape that cannot be made is a mistake in the file: say so
+    // before any mesh exists
+    if (!target.is_image())
+      {
+        if (willmore.dimension == 2)
+          Shapes::create_signed_distance<2>(target.shape);
+        else
+          Shapes::create_signed_distance<3>(target.shape);
+      }
     // evaluate and check the expressions in h on every level now
     for (unsigned int i = 0; i < multilevel.levels.size(); ++i)
       for_level(i);
