@@ -108,7 +108,7 @@ namespace PhaseField
   {
     prm.enter_subsection("Multilevel");
     prm.declare_entry("Levels",
-                      "6, 7, 8",
+                      "5, 6",
                       Patterns::Anything(),
                       "Comma separated, strictly increasing finest mesh "
                       "levels (h = 2^-level), coarse to fine. Epsilon, Tau "
@@ -116,7 +116,7 @@ namespace PhaseField
                       "P are transferred to the finer band and the target "
                       "labeling is recomputed on the finer pixel grid.");
     prm.declare_entry("Steps per level",
-                      "150, 25, 15",
+                      "40, 10",
                       Patterns::Anything(),
                       "Comma separated steps of Algorithm 6.1 on each level "
                       "(as many as Levels); with Transition = automatic the "
@@ -186,7 +186,6 @@ namespace PhaseField
     WillmoreParameters::declare_parameters(prm, "", "", true);
     prm.enter_subsection("Geometry");
     prm.set("Shape", "circle");
-    prm.set("Center", "0.5, 0.5");
     prm.leave_subsection();
     prm.enter_subsection("Time stepping");
     prm.set("Tau", "0.03*h");
