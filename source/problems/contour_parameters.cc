@@ -116,7 +116,7 @@ namespace PhaseField
                       "P are transferred to the finer band and the target "
                       "labeling is recomputed on the finer pixel grid.");
     prm.declare_entry("Steps per level",
-                      "40, 10",
+                      "20, 5",
                       Patterns::Anything(),
                       "Comma separated steps of Algorithm 6.1 on each level "
                       "(as many as Levels); with Transition = automatic the "
