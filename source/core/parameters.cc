@@ -192,15 +192,13 @@ namespace PhaseField
 
 
   void
-  MeshParameters::declare_parameters(ParameterHandler &prm,
-                                     const bool        with_finest_level)
+  MeshParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    if (with_finest_level)
-      prm.declare_entry("Finest level",
-                        "7",
-                        Patterns::Integer(1, 12),
-                        "Finest refinement level: h = 2^-level on [0,1]^d.");
+    prm.declare_entry("Finest level",
+                      "7",
+                      Patterns::Integer(1, 12),
+                      "Finest refinement level: h = 2^-level on [0,1]^d.");
     prm.declare_entry("Coarsest level",
                       "3",
                       Patterns::Integer(0, 12),
@@ -242,13 +240,11 @@ namespace PhaseField
 
 
   void
-  MeshParameters::parse_parameters(ParameterHandler &prm,
-                                   const bool        with_finest_level)
+  MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
+    finest_level   = prm.get_integer("Finest level");
     coarsest_level = prm.get_integer("Coarsest level");
-    finest_level =
-      with_finest_level ? prm.get_integer("Finest level") : coarsest_level;
     adaptive             = prm.get_bool("Adaptive");
     band_width           = prm.get_double("Band width");
     refinement_interval  = prm.get_integer("Refinement interval");
@@ -555,7 +551,7 @@ namespace PhaseField
     GeometryParameters::declare_parameters(prm,
                                            extra_shapes,
                                            extra_documentation);
-    MeshParameters::declare_parameters(prm, !multilevel);
+    MeshParameters::declare_parameters(prm);
     ModelParameters::declare_parameters(prm, !multilevel);
     NewtonParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
@@ -572,7 +568,7 @@ namespace PhaseField
     dimension        = prm.get_integer("Dimension");
     output_directory = prm.get("Output directory");
     geometry.parse_parameters(prm);
-    mesh.parse_parameters(prm, !multilevel);
+    mesh.parse_parameters(prm);
     model.parse_parameters(prm, !multilevel);
     newton.parse_parameters(prm);
     linear_solver.parse_parameters(prm);

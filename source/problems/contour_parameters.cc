@@ -111,7 +111,8 @@ namespace PhaseField
                       "5, 6",
                       Patterns::Anything(),
                       "Comma separated, strictly increasing finest mesh "
-                      "levels (h = 2^-level), coarse to fine. Epsilon, Tau "
+                      "levels (h = 2^-level), coarse to fine; empty: the "
+                      "one level <Mesh / Finest level>. Epsilon, Tau "
                       "and Inner tau are evaluated at each level's h; U, V, "
                       "P are transferred to the finer band and the target "
                       "labeling is recomputed on the finer pixel grid.");
@@ -149,11 +150,17 @@ namespace PhaseField
 
   void
   MultilevelParameters::parse_parameters(ParameterHandler  &prm,
+                                                             const unsigned int finest_level,
                                          const unsigned int coarsest_level)
   {
     prm.enter_subsection("Multilevel");
-    levels = parse_integer_list(
-      prm.get("Levels"), "Multilevel / Levels", 1, max_mesh_level, true);
+    levels = prm.get("Levels").empty() ?
+               std::vector<unsigned int>{finest_level} :
+               parse_integer_list(prm.get("Levels"),
+                                  "Multilevel / Levels",
+                                  1,
+                                  max_mesh_level,
+                                  true);
     steps_per_level = parse_integer_list(prm.get("Steps per level"),
                                          "Multilevel / Steps per level",
                                          0,
@@ -206,7 +213,9 @@ namespace PhaseField
     willmore.parse_parameters(prm, true);
     target.parse_parameters(prm);
     model.parse_parameters(prm);
-    multilevel.parse_parameters(prm, willmore.mesh.coarsest_level);
+    multilevel.parse_parameters(prm,
+                                willmore.mesh.finest_level,
+                                willmore.mesh.coarsest_level);
     if (willmore.model.scheme != Scheme::nested)
       throw InputError("shape_from_contour needs <Time stepping / Scheme> = "
                        "nested: the Willmore and area weights of its "

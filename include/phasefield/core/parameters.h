@@ -137,17 +137,10 @@ namespace PhaseField
     double
     h() const;
 
-    /**
-     * Without @p with_finest_level (shape from contour, where the
-     * multilevel schedule sets it) `Finest level` is not declared and
-     * finest_level is the coarsest level until the program sets it.
-     */
     static void
-    declare_parameters(dealii::ParameterHandler &prm,
-                       const bool                with_finest_level = true);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const bool                with_finest_level = true);
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 
   /** Time stepping scheme of willmore_flow. */
@@ -315,9 +308,9 @@ namespace PhaseField
 
     /**
      * @p extra_shapes, @p extra_documentation: see GeometryParameters.
-     * @p multilevel: without `Mesh / Finest level`, `Time stepping /
-     * Number of steps` and `Ramp-up steps` (shape from contour, whose
-     * multilevel schedule sets them; parse_parameters() then leaves the
+     * @p multilevel: without `Time stepping / Number of steps` and
+     * `Ramp-up steps` (shape from contour, whose multilevel schedule sets
+     * them and the finest level; parse_parameters() then leaves the
      * expressions in h unevaluated until set_finest_level()).
      */
     static void

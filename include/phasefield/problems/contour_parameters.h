@@ -85,9 +85,14 @@ namespace PhaseField
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
-    /** Parse and validate (@p coarsest_level: `Mesh / Coarsest level`). */
+    /**
+     * Parse and validate (@p finest_level, @p coarsest_level: `Mesh /
+     * Finest level`, the one level if `Levels` is empty, and `Mesh /
+     * Coarsest level`).
+     */
     void
     parse_parameters(dealii::ParameterHandler &prm,
+                     const unsigned int        finest_level,
                      const unsigned int        coarsest_level);
   };
 
