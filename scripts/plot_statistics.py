@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """Plot the energies (and the L2 error, where known) of a statistics.csv.
 
+For shape_from_contour (a statistics.csv with mismatch_energy) the energy
+components over the steps, with the level transitions, as thesis Fig. 6.6.
+
 Usage: plot_statistics.py <output directory or statistics.csv> [out.png]
 Writes energies.png next to statistics.csv unless out.png is given.
 """
@@ -29,6 +32,9 @@ def main():
         rows = list(csv.DictReader(f))
     if not rows:
         sys.exit(f"plot_statistics.py: {path} has no rows")
+    if "mismatch_energy" in rows[0]:
+        plot_contour(rows, out)
+        return
     t = [float(r["time"]) for r in rows]
     errors = [float(r["l2_error"]) for r in rows]
     has_error = any(not math.isnan(e) for e in errors)
@@ -51,6 +57,30 @@ def main():
         ax.set_xlabel("time")
         ax.set_ylabel("L2 error")
         ax.set_title("L2 error against the exact evolution")
+    fig.tight_layout()
+    fig.savefig(out, dpi=100)
+    print(f"wrote {out}")
+
+
+def plot_contour(rows, out):
+    """Energy components of shape_from_contour over the steps."""
+    step = [float(r["step"]) for r in rows]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for name, label in [("total_energy", "total energy (6.3), thesis units"),
+                        ("mismatch_energy", "mismatch j (with gamma)"),
+                        ("willmore_energy", "Willmore energy (geometric units)"),
+                        ("area_energy", "area energy (geometric units)")]:
+        ax.semilogy(step, [float(r[name]) for r in rows], label=label)
+    # a level starts with a row of the transferred state at the same step
+    for i in range(1, len(rows)):
+        if rows[i]["level"] != rows[i - 1]["level"]:
+            ax.axvline(step[i], color="gray", linestyle=":")
+            ax.text(step[i], ax.get_ylim()[1], " h = 2^-" +
+                    rows[i]["level"].split(".")[0], va="top", fontsize=8)
+    ax.set_xlabel("step")
+    ax.set_ylabel("energy")
+    ax.set_title("shape from contour: energy components")
+    ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(out, dpi=100)
     print(f"wrote {out}")

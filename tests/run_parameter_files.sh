@@ -2,7 +2,8 @@
 # Usage: run_parameter_files.sh <source directory> <build directory>
 # Runs every shipped parameter file parameter_files/<program>/*.prm through
 # build/<program> with --set options that make it small (level 5, two
-# steps, epsilon = 4h; biharmonic_flow: levels 3 and 4), then the demo (willmore_flow
+# steps, epsilon = 4h; biharmonic_flow: levels 3 and 4; shape_from_contour:
+# level 5, two steps), then the demo (willmore_flow
 # without arguments, shortened by --set) and scripts/plot_statistics.py on
 # its output. Passes if every run exits with status 0. Runs in the source
 # directory, since the files name their images relative to it.
@@ -22,6 +23,10 @@ for prm in parameter_files/*/*.prm; do
   case "$program" in
     biharmonic_flow)
       run "$build_dir/$program" "$prm" --set "Convergence/Levels=3,4" \
+        --set "Output directory=$output/run" ;;
+    shape_from_contour)
+      run "$build_dir/$program" "$prm" --set "Multilevel/Levels=5" \
+        --set "Multilevel/Steps per level=2" \
         --set "Output directory=$output/run" ;;
     *)
       run "$build_dir/$program" "$prm" --set "Mesh/Finest level=5" \

@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <iostream>
 #include <phasefield/core/parameters.h>
+#include <phasefield/problems/contour_problem.h>
 #include <phasefield/problems/restoration_parameters.h>
 #include <phasefield/problems/restoration_problem.h>
 #include <phasefield/problems/willmore_problem.h>
@@ -96,6 +97,26 @@ namespace Testing
     else
       PhaseField::WillmoreProblem<3>(parameters).run();
     return read_csv(directory + "/statistics.csv", header);
+  }
+
+  /**
+   * Run shape_from_contour on the parameters in @p prm_text (output
+   * directory "results") and return the rows of statistics.csv.
+   */
+  inline std::vector<std::vector<double>>
+  run_contour(const std::string &prm_text, std::vector<std::string> &header)
+  {
+    dealii::ParameterHandler prm;
+    PhaseField::ContourParameters::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text +
+                                "\nset Output directory = results\n");
+    PhaseField::ContourParameters parameters;
+    parameters.parse_parameters(prm);
+    if (parameters.willmore.dimension == 2)
+      PhaseField::ContourProblem<2>(parameters).run();
+    else
+      PhaseField::ContourProblem<3>(parameters).run();
+    return read_csv("results/statistics.csv", header);
   }
 
   /** The statistics.csv columns that the program tests compare. */

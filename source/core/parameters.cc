@@ -70,19 +70,56 @@ namespace PhaseField
 
 
 
+  std::vector<unsigned int>
+  parse_integer_list(const std::string &text,
+                     const std::string &parameter_name,
+                     const unsigned int minimum,
+                     const unsigned int maximum,
+                     const bool         increasing)
+  {
+    const std::vector<double> values = parse_double_list(text, parameter_name);
+    if (values.empty())
+      throw InputError("The parameter <" + parameter_name +
+                       "> must list at least one value.");
+    std::vector<unsigned int> list;
+    for (const double value : values)
+      {
+        if (value != std::floor(value) || value < minimum || value > maximum)
+          throw InputError("The parameter <" + parameter_name +
+                           "> must contain integers between " +
+                           std::to_string(minimum) + " and " +
+                           std::to_string(maximum) + ", but contains " +
+                           std::to_string(value) + ".");
+        const unsigned int entry = static_cast<unsigned int>(value);
+        if (increasing && !list.empty() && entry <= list.back())
+          throw InputError("The parameter <" + parameter_name +
+                           "> must be strictly increasing, but " +
+                           std::to_string(entry) + " follows " +
+                           std::to_string(list.back()) + ".");
+        list.push_back(entry);
+      }
+    return list;
+  }
+
+
+
   void
   GeometryParameters::declare_parameters(ParameterHandler  &prm,
                                          const std::string &extra_shapes,
-                                         const std::string &extra_documentation)
+                                         const std::string &extra_documentation,
+                                         const std::string &subsection,
+                                         const std::string &purpose,
+                                         const std::string &default_shape)
   {
-    prm.enter_subsection("Geometry");
+    prm.enter_subsection(subsection);
     prm.declare_entry(
       "Shape",
-      "two circles",
+      default_shape,
       Patterns::Selection("circle|quarter circle|rectangle|two circles|cube|"
                           "disc|sphere|ellipsoid|torus|function" +
                           (extra_shapes.empty() ? "" : "|" + extra_shapes)),
-      "Initial shape. The phase field is tanh(signed distance / epsilon), "
+      purpose +
+        ". The phase field is tanh(signed distance / epsilon), "
       "negative inside. circle/sphere: Center, Radius. quarter circle: "
       "circle around Center (default: the origin). rectangle/cube: Center, "
       "Sizes = edge lengths (one value: all edges equal). two circles: "
@@ -125,20 +162,23 @@ namespace PhaseField
 
 
   void
-  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  GeometryParameters::parse_parameters(ParameterHandler  &prm,
+                                       const std::string &subsection_name)
   {
-    prm.enter_subsection("Geometry");
+    subsection = subsection_name;
+    prm.enter_subsection(subsection);
     shape  = prm.get("Shape");
-    center = parse_double_list(prm.get("Center"), "Geometry / Center");
+    center = parse_double_list(prm.get("Center"), subsection + " / Center");
     second_center =
-      parse_double_list(prm.get("Second center"), "Geometry / Second center");
+      parse_double_list(prm.get("Second center"), subsection + " / Second center");
     radius     = prm.get_double("Radius");
-    sizes      = parse_double_list(prm.get("Sizes"), "Geometry / Sizes");
+    sizes      = parse_double_list(prm.get("Sizes"), subsection + " / Sizes");
     expression = prm.get("Expression");
     prm.leave_subsection();
     for (const double s : sizes)
       if (!(s > 0))
-        throw InputError("All entries of <Geometry / Sizes> must be positive.");
+        throw InputError("All entries of <" + subsection +
+                         " / Sizes> must be positive.");
   }
 
 
@@ -203,8 +243,8 @@ namespace PhaseField
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    finest_level         = prm.get_integer("Finest level");
-    coarsest_level       = prm.get_integer("Coarsest level");
+    finest_level   = prm.get_integer("Finest level");
+    coarsest_level = prm.get_integer("Coarsest level");
     adaptive             = prm.get_bool("Adaptive");
     band_width           = prm.get_double("Band width");
     refinement_interval  = prm.get_integer("Refinement interval");
@@ -222,7 +262,8 @@ namespace PhaseField
 
 
   void
-  ModelParameters::declare_parameters(ParameterHandler &prm)
+  ModelParameters::declare_parameters(ParameterHandler &prm,
+                                      const bool        with_step_counts)
   {
     prm.enter_subsection("Phase field");
     prm.declare_entry("Epsilon",
@@ -252,6 +293,16 @@ namespace PhaseField
                       "Inner (mean curvature) time step, an expression in h. "
                       "Inner tau < epsilon^2/2 keeps the inner problem "
                       "convex.");
+    if (with_step_counts)
+      declare_step_counts(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ModelParameters::declare_step_counts(ParameterHandler &prm)
+  {
     prm.declare_entry("Number of steps",
                       "15",
                       Patterns::Integer(0),
@@ -269,13 +320,13 @@ namespace PhaseField
                       "a hard nonlinear problem whatever its size (halving "
                       "Tau after a failure does not help); small first "
                       "steps smooth the data so that Newton converges.");
-    prm.leave_subsection();
   }
 
 
 
   void
-  ModelParameters::parse_parameters(ParameterHandler &prm)
+  ModelParameters::parse_parameters(ParameterHandler &prm,
+                                    const bool        with_step_counts)
   {
     prm.enter_subsection("Phase field");
     epsilon_expression = prm.get("Epsilon");
@@ -285,8 +336,8 @@ namespace PhaseField
                                                     Scheme::nested;
     tau_expression       = prm.get("Tau");
     inner_tau_expression = prm.get("Inner tau");
-    n_steps              = prm.get_integer("Number of steps");
-    n_ramp_steps         = prm.get_integer("Ramp-up steps");
+    n_steps      = with_step_counts ? prm.get_integer("Number of steps") : 0;
+    n_ramp_steps = with_step_counts ? prm.get_integer("Ramp-up steps") : 0;
     prm.leave_subsection();
   }
 
@@ -492,7 +543,8 @@ namespace PhaseField
   void
   WillmoreParameters::declare_parameters(ParameterHandler  &prm,
                                          const std::string &extra_shapes,
-                                         const std::string &extra_documentation)
+                                         const std::string &extra_documentation,
+                                         const bool         multilevel)
   {
     declare_common_parameters(
       prm, "Directory for statistics.csv and the VTU/PVD files.");
@@ -500,7 +552,7 @@ namespace PhaseField
                                            extra_shapes,
                                            extra_documentation);
     MeshParameters::declare_parameters(prm);
-    ModelParameters::declare_parameters(prm);
+    ModelParameters::declare_parameters(prm, !multilevel);
     NewtonParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
@@ -510,17 +562,28 @@ namespace PhaseField
 
 
   void
-  WillmoreParameters::parse_parameters(ParameterHandler &prm)
+  WillmoreParameters::parse_parameters(ParameterHandler &prm,
+                                       const bool        multilevel)
   {
     dimension        = prm.get_integer("Dimension");
     output_directory = prm.get("Output directory");
     geometry.parse_parameters(prm);
     mesh.parse_parameters(prm);
-    model.parse_parameters(prm);
+    model.parse_parameters(prm, !multilevel);
     newton.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     output.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
+    if (!multilevel)
+      set_finest_level(mesh.finest_level);
+  }
+
+
+
+  void
+  WillmoreParameters::set_finest_level(const unsigned int level)
+  {
+    mesh.finest_level = level;
     model.evaluate(mesh.h());
     check_uniform_mesh_size();
   }

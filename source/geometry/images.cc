@@ -183,22 +183,20 @@ namespace PhaseField
 
 
 
-    ImageDistance::ImageDistance(const std::string &filename,
-                                 const double       threshold)
+    GrayImage
+    read_gray_image(const std::string &filename,
+                    const std::string &parameter_name)
     {
+      const std::string file =
+        "The image file <" + filename + "> given in <" + parameter_name + ">";
       if (!std::filesystem::is_regular_file(filename))
-        throw InputError("The image file <" + filename +
-                         "> given in <Geometry / Image file> does not exist.");
+        throw InputError(file + " does not exist.");
       vtkNew<vtkPNGReader> reader;
       if (reader->CanReadFile(filename.c_str()) == 0)
-        throw InputError("The image file <" + filename +
-                         "> given in <Geometry / Image file> is not a "
-                         "readable PNG image.");
+        throw InputError(file + " is not a readable PNG image.");
       if (!png_chunks_intact(filename))
-        throw InputError("The image file <" + filename +
-                         "> given in <Geometry / Image file> is a damaged "
-                         "PNG image (truncated, or a chunk with a wrong "
-                         "checksum).");
+        throw InputError(file + " is a damaged PNG image (truncated, or a "
+                                "chunk with a wrong checksum).");
       reader->SetFileName(filename.c_str());
       // VTK reports corrupt data through its error events, not exceptions
       bool                       read_error = false;
@@ -214,37 +212,53 @@ namespace PhaseField
       reader->Update();
       vtkImageData *image = reader->GetOutput();
       if (read_error || reader->GetErrorCode() != 0)
-        throw InputError("The image file <" + filename +
-                         "> given in <Geometry / Image file> is a damaged "
-                         "PNG image: its data could not be decoded.");
+        throw InputError(file + " is a damaged PNG image: its data could not "
+                                "be decoded.");
       int dims[3];
       image->GetDimensions(dims);
-      if (dims[0] < 2 || dims[1] < 2)
-        throw InputError("The image file <" + filename +
-                         "> given in <Geometry / Image file> could not be "
-                         "read or has fewer than 2 x 2 pixels.");
-      nx                     = dims[0];
-      ny                     = dims[1];
-      pixel_size             = 1. / std::max(nx, ny);
+      if (dims[0] < 1 || dims[1] < 1)
+        throw InputError(file + " has no pixels.");
+      GrayImage result;
+      result.nx              = dims[0];
+      result.ny              = dims[1];
       const int n_components = image->GetNumberOfScalarComponents();
       // gray (+ alpha): the gray value; RGB (+ alpha): the mean of RGB
       const int    n_color       = n_components <= 2 ? 1 : 3;
       const double maximum_value = image->GetScalarTypeMax();
-
       // VTK's image rows run from the bottom, like y
-      std::vector<bool> inside(nx * ny), outside(nx * ny);
-      unsigned int      n_inside = 0;
-      for (unsigned int y = 0; y < ny; ++y)
-        for (unsigned int x = 0; x < nx; ++x)
+      result.gray.resize(result.nx * result.ny);
+      for (unsigned int y = 0; y < result.ny; ++y)
+        for (unsigned int x = 0; x < result.nx; ++x)
           {
             double gray = 0;
             for (int c = 0; c < n_color; ++c)
               gray += image->GetScalarComponentAsDouble(x, y, 0, c);
-            gray /= n_color * maximum_value;
-            inside[y * nx + x]  = gray < threshold;
-            outside[y * nx + x] = !inside[y * nx + x];
-            n_inside += inside[y * nx + x];
+            result.gray[y * result.nx + x] = gray / (n_color * maximum_value);
           }
+      return result;
+    }
+
+
+
+    ImageDistance::ImageDistance(const std::string &filename,
+                                 const double       threshold)
+    {
+      const GrayImage image = read_gray_image(filename, "Geometry / Image file");
+      if (image.nx < 2 || image.ny < 2)
+        throw InputError("The image file <" + filename +
+                         "> given in <Geometry / Image file> has fewer than "
+                         "2 x 2 pixels.");
+      nx         = image.nx;
+      ny         = image.ny;
+      pixel_size = 1. / std::max(nx, ny);
+      std::vector<bool> inside(nx * ny), outside(nx * ny);
+      unsigned int      n_inside = 0;
+      for (unsigned int i = 0; i < nx * ny; ++i)
+        {
+          inside[i]  = image.gray[i] < threshold;
+          outside[i] = !inside[i];
+          n_inside += inside[i];
+        }
       if (n_inside == 0 || n_inside == nx * ny)
         throw InputError(
           "The image file <" + filename + "> has " +
@@ -346,9 +360,6 @@ namespace PhaseField
     {
       constexpr double        outline_width = 1.5; // pixels
       constexpr unsigned char full          = 255;
-      vtkNew<vtkImageData>    image;
-      image->SetDimensions(n, n, 1);
-      image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
       const auto near = [&](const double pixel, const double x) {
         return std::abs(pixel - (x * n - 0.5)) <= outline_width / 2;
       };
@@ -357,12 +368,12 @@ namespace PhaseField
           return pixel >= a * n - 0.5 - outline_width / 2 &&
                  pixel <= b * n - 0.5 + outline_width / 2;
         };
+      std::vector<unsigned char> rgb(3 * n * n);
       for (unsigned int y = 0; y < n; ++y)
         for (unsigned int x = 0; x < n; ++x)
           {
-            auto *pixel =
-              static_cast<unsigned char *>(image->GetScalarPointer(x, y, 0));
-            const bool outline =
+            unsigned char *pixel = &rgb[3 * (y * n + x)];
+            const bool     outline =
               ((near(x, region.lower[0]) || near(x, region.upper[0])) &&
                between(y, region.lower[1], region.upper[1])) ||
               ((near(y, region.lower[1]) || near(y, region.upper[1])) &&
@@ -377,6 +388,24 @@ namespace PhaseField
             pixel[0] = pixel[1] = pixel[2] =
               static_cast<unsigned char>(std::lround(0.5 * (u + 1) * full));
           }
+      write_rgb_png(rgb, n, n, filename);
+    }
+
+
+
+    void
+    write_rgb_png(const std::vector<unsigned char> &rgb,
+                  const unsigned int                nx,
+                  const unsigned int                ny,
+                  const std::string                &filename)
+    {
+      AssertDimension(rgb.size(), 3 * nx * ny);
+      vtkNew<vtkImageData> image;
+      image->SetDimensions(nx, ny, 1);
+      image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+      std::copy(rgb.begin(),
+                rgb.end(),
+                static_cast<unsigned char *>(image->GetScalarPointer()));
       vtkNew<vtkPNGWriter> writer;
       writer->SetFileName(filename.c_str());
       writer->SetInputData(image);

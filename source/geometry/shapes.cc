@@ -229,10 +229,13 @@ namespace PhaseField
 
 
 
-    template <int dim>
-    std::unique_ptr<Function<dim>>
-    create_signed_distance(const GeometryParameters &geometry)
+    namespace
     {
+      /** create_signed_distance() with messages about `Geometry`. */
+      template <int dim>
+      std::unique_ptr<Function<dim>>
+      create_shape_distance(const GeometryParameters &geometry)
+      {
       const std::string &shape  = geometry.shape;
       const Point<dim>   center = shape_center<dim>(geometry);
       const double       r      = geometry.radius;
@@ -280,6 +283,29 @@ namespace PhaseField
         return parsed_distance<dim>(geometry.expression);
 
       throw InputError("Unknown <Geometry / Shape> = <" + shape + ">.");
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    std::unique_ptr<Function<dim>>
+    create_signed_distance(const GeometryParameters &geometry)
+    {
+      try
+        {
+          return create_shape_distance<dim>(geometry);
+        }
+      catch (const InputError &error)
+        {
+          // the messages name <Geometry / ...>: say where the shape was
+          std::string       message = error.what();
+          const std::string from = "<Geometry / ", to = "<" + geometry.subsection + " / ";
+          for (std::size_t at = message.find(from); at != std::string::npos;
+               at = message.find(from, at + to.size()))
+            message.replace(at, from.size(), to);
+          throw InputError(message);
+        }
     }
 
 

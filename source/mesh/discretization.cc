@@ -218,7 +218,17 @@ namespace PhaseField
     triangulation.prepare_coarsening_and_refinement();
     if (n_flagged_cells(triangulation) == 0)
       return false;
+    execute_with_transfer(ghosted, fields);
+    return true;
+  }
 
+
+
+  template <int dim>
+  void
+  Discretization<dim>::execute_with_transfer(const std::vector<Vector> &ghosted,
+                                             BlockVector               &fields)
+  {
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
     std::vector<const Vector *>                          in;
     for (const auto &g : ghosted)
@@ -232,7 +242,31 @@ namespace PhaseField
     for (unsigned int b = 0; b < fields.n_blocks(); ++b)
       out.push_back(&fields.block(b));
     transfer.interpolate(out);
-    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::refine_to_level(const unsigned int level,
+                                       BlockVector       &fields)
+  {
+    AssertThrow(level >= settings.mesh.finest_level,
+                ExcMessage("refine_to_level() cannot coarsen the band."));
+    const unsigned int n_new = level - settings.mesh.finest_level;
+    settings.mesh.finest_level = level;
+    // every adaptation refines the band (or the uniform mesh) by one level
+    for (unsigned int i = 0; i < n_new; ++i)
+      if (settings.mesh.adaptive)
+        adapt_to_phase_field(fields);
+      else
+        {
+          const std::vector<Vector> ghosted = ghosted_copies(fields);
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned())
+              cell->set_refine_flag();
+          execute_with_transfer(ghosted, fields);
+        }
   }
 
 

@@ -8,9 +8,6 @@ namespace PhaseField
 
   namespace
   {
-    /** Finest level a convergence study may use (h = 2^-12). */
-    constexpr unsigned int max_level = 12;
-
     /**
      * Relative slack when counting time steps, so that a final time that
      * is a multiple of Tau up to a printed precision of six digits (the
@@ -100,29 +97,8 @@ namespace PhaseField
   {
     const std::string name = parameter_name("Convergence", "Levels");
     prm.enter_subsection("Convergence");
-    const std::vector<double> values =
-      parse_double_list(prm.get("Levels"), name);
+    levels = parse_integer_list(prm.get("Levels"), name, 1, max_mesh_level, true);
     prm.leave_subsection();
-
-    if (values.empty())
-      throw InputError("The parameter <" + name +
-                       "> must list at least one refinement level.");
-    levels.clear();
-    for (const double value : values)
-      {
-        if (value != std::floor(value) || value < 1 || value > max_level)
-          throw InputError("The parameter <" + name +
-                           "> must contain integers between 1 and " +
-                           std::to_string(max_level) + ", but contains " +
-                           std::to_string(value) + ".");
-        const unsigned int level = static_cast<unsigned int>(value);
-        if (!levels.empty() && level <= levels.back())
-          throw InputError("The parameter <" + name +
-                           "> must be strictly increasing, but " +
-                           std::to_string(level) + " follows " +
-                           std::to_string(levels.back()) + ".");
-        levels.push_back(level);
-      }
   }
 
 

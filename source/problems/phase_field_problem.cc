@@ -49,17 +49,26 @@ namespace PhaseField
 
   template <int dim>
   void
-  PhaseFieldProblem<dim>::run()
+  PhaseFieldProblem<dim>::create_scheme(const WillmoreParameters &parameters)
   {
     SchemeSettings settings;
-    settings.scheme        = prm.model.scheme;
-    settings.epsilon       = prm.model.epsilon;
-    settings.inner_tau     = prm.model.inner_tau;
+    settings.scheme        = parameters.model.scheme;
+    settings.epsilon       = parameters.model.epsilon;
+    settings.inner_tau     = parameters.model.inner_tau;
     settings.outer_energy  = setup.outer_energy;
-    settings.newton        = prm.newton;
-    settings.linear_solver = prm.linear_solver;
-    settings.verbose       = prm.output.verbose;
+    settings.newton        = parameters.newton;
+    settings.linear_solver = parameters.linear_solver;
+    settings.verbose       = parameters.output.verbose;
     scheme = create_time_stepping_scheme<dim>(settings, discretization, pcout);
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::run()
+  {
+    create_scheme(prm);
     TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(prm),
                             discretization,
                             *scheme,

@@ -444,13 +444,12 @@ namespace PhaseField
           for (unsigned int col = 0; col < 3; ++col)
             if (!(row == Field::P && col == Field::P))
               dsp.add(index(g, row), index(g, col));
-        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
-          {
-            const types::global_dof_index col = entry->column();
+        for_each_entry_in_row(
+          L, g, [&](const types::global_dof_index col, const double) {
             dsp.add(index(g, Field::U), index(col, Field::U));
             dsp.add(index(g, Field::V), index(col, Field::P));
             dsp.add(index(g, Field::P), index(col, Field::V));
-          }
+          });
       }
     j.reinit(owned3, owned3, dsp, discretization.get_mpi_communicator());
   }
@@ -510,10 +509,8 @@ namespace PhaseField
               m[i] * (a + weights.e(v[i], p[i])));
         j.add(index(g, Field::V), index(g, Field::P), p_scale * k_diag);
         j.add(index(g, Field::P), index(g, Field::V), p_scale * k_diag);
-        for (auto entry = L.begin(g); entry != L.end(g); ++entry)
-          {
-            const types::global_dof_index col   = entry->column();
-            const double                  value = entry->value();
+        for_each_entry_in_row(
+          L, g, [&](const types::global_dof_index col, const double value) {
             if (!identity_row[i] && !fixed_column(col))
               j.add(index(g, Field::U),
                     index(col, Field::U),
@@ -524,7 +521,7 @@ namespace PhaseField
             j.add(index(g, Field::P),
                   index(col, Field::V),
                   p_scale * weights.inner_tau * value);
-          }
+          });
       }
     j.compress(VectorOperation::add);
   }

@@ -75,6 +75,7 @@ namespace PhaseField
     , pcout(pcout)
     , timer(timer)
     , n_steps(settings.model.n_ramp_steps + settings.model.n_steps)
+    , final_step(n_steps)
     , state_tau(settings.model.tau)
   {}
 
@@ -124,7 +125,7 @@ namespace PhaseField
   void
   TimeLoop<dim>::resume(BlockVector &state)
   {
-    const unsigned int last_step = load_checkpoint(state);
+    last_step = load_checkpoint(state);
     statistics =
       std::make_unique<StatisticsFile>(settings.output_directory +
                                          "/statistics.csv",
@@ -134,6 +135,28 @@ namespace PhaseField
     pcout << "resuming after step " << last_step << " at t = " << time
           << std::endl;
     run_steps(last_step + 1, state);
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::continue_run(BlockVector       &state,
+                              const unsigned int previous_step,
+                              const double       start_time)
+  {
+    step_offset = previous_step;
+    final_step  = previous_step + n_steps;
+    last_step   = previous_step;
+    time        = start_time;
+    statistics =
+      std::make_unique<StatisticsFile>(settings.output_directory +
+                                         "/statistics.csv",
+                                       statistics_columns(),
+                                       discretization.get_mpi_communicator(),
+                                       previous_step);
+    record(previous_step, state, StepReport(), settings.model.tau, false);
+    run_steps(previous_step + 1, state);
   }
 
 
@@ -172,26 +195,32 @@ namespace PhaseField
   TimeLoop<dim>::run_steps(const unsigned int first_step, BlockVector &state)
   {
     const unsigned int checkpoints = settings.checkpoint_interval;
-    for (unsigned int step = first_step; step <= n_steps; ++step)
+    for (unsigned int step = first_step; step <= final_step; ++step)
       {
         old_state        = state;
-        double       tau = settings.model.step_size(step);
+        double       tau = settings.model.step_size(step - step_offset);
         const double energy_before =
           scheme.has_energy_law() ? scheme.energy_law_energy(state) : 0.;
         const StepReport report = advance_with_halving(step, state, tau);
-        if (scheme.has_energy_law())
+        if (scheme.has_energy_law() && client.energy_law_applies())
           check_energy_law(step, state, energy_before, tau);
         state_tau = tau;
         time += tau;
+        last_step = step;
         record(step, state, report, tau);
+        const bool finished =
+          step == final_step ||
+          client.finished(step, state, scheme.energies(state));
         // a checkpoint holds the start of the next step: after the last
         // step too, the mesh is adapted for it
         const bool checkpoint = checkpoints > 0 && step % checkpoints == 0;
         if (settings.adaptive && step % settings.refinement_interval == 0 &&
-            (step < n_steps || checkpoint))
+            (!finished || checkpoint))
           remesh(state);
         if (checkpoint)
           write_checkpoint(step, state);
+        if (finished)
+          break;
       }
   }
 
@@ -302,7 +331,8 @@ namespace PhaseField
   TimeLoop<dim>::record(const unsigned int step,
                         const BlockVector &state,
                         const StepReport  &report,
-                        const double       tau)
+                        const double       tau,
+                        const bool         with_output)
   {
     const Energies e     = scheme.energies(state);
     const double   error = client.l2_error(state, time);
@@ -343,8 +373,8 @@ namespace PhaseField
       pcout << "  L2 error = " << std::setprecision(4) << error;
     pcout << "  cells " << cells << "  [" << std::setprecision(3)
           << wall_timer.wall_time() << " s]" << std::endl;
-    if (settings.vtu_interval > 0 &&
-        (step % settings.vtu_interval == 0 || step == n_steps))
+    if (with_output && settings.vtu_interval > 0 &&
+        (step % settings.vtu_interval == 0 || step == final_step))
       output_results(step, state);
   }
 

@@ -44,6 +44,21 @@ namespace PhaseField
   std::vector<double>
   parse_double_list(const std::string &text, const std::string &parameter_name);
 
+  /** Largest mesh level that a parameter may ask for (h = 2^-12). */
+  constexpr unsigned int max_mesh_level = 12;
+
+  /**
+   * Parse a comma separated list of integers in [@p minimum, @p maximum]
+   * (strictly increasing if @p increasing); throws InputError naming
+   * @p parameter_name for an empty list or any violation.
+   */
+  std::vector<unsigned int>
+  parse_integer_list(const std::string &text,
+                     const std::string &parameter_name,
+                     const unsigned int minimum,
+                     const unsigned int maximum,
+                     const bool         increasing);
+
   /** Quadrature rule for the cell integrals of the stiffness matrix L. */
   enum class StiffnessQuadrature
   {
@@ -82,18 +97,27 @@ namespace PhaseField
     std::vector<double> sizes;
     /** Signed distance as a muParser expression in x, y (, z). */
     std::string expression;
+    /** The subsection the shape was read from (for messages). */
+    std::string subsection = "Geometry";
 
     /**
      * Declare the subsection. A program with shapes of its own (edge
      * restoration's images) adds their names, separated by `|`, in
      * @p extra_shapes and their documentation in @p extra_documentation.
+     * A program with a second shape (shape from contour's target)
+     * declares it in another @p subsection, with its @p purpose (the first
+     * words of the documentation of `Shape`) and @p default_shape.
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm,
                        const std::string        &extra_shapes        = "",
-                       const std::string        &extra_documentation = "");
+                       const std::string        &extra_documentation = "",
+                       const std::string        &subsection    = "Geometry",
+                       const std::string        &purpose       = "Initial shape",
+                       const std::string        &default_shape = "two circles");
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const std::string        &subsection_name = "Geometry");
   };
 
   /** Subsection `Mesh`: narrow-band adaptivity on [0,1]^d. */
@@ -159,13 +183,25 @@ namespace PhaseField
     double tau       = 0;
     double inner_tau = 0;
 
+    /**
+     * Without @p with_step_counts (shape from contour, whose multilevel
+     * schedule counts the steps) `Number of steps` and `Ramp-up steps` are
+     * not declared and are 0.
+     */
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const bool                with_step_counts = true);
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const bool                with_step_counts = true);
     /** Evaluate the expressions at mesh size @p h and validate them. */
     void
     evaluate(const double h);
+
+  private:
+    /** `Number of steps` and `Ramp-up steps` in `Time stepping`. */
+    static void
+    declare_step_counts(dealii::ParameterHandler &prm);
   };
 
   /** Subsection `Newton`. */
@@ -270,13 +306,28 @@ namespace PhaseField
     OutputParameters       output;
     CheckpointParameters   checkpoint;
 
-    /** @p extra_shapes, @p extra_documentation: see GeometryParameters. */
+    /**
+     * @p extra_shapes, @p extra_documentation: see GeometryParameters.
+     * @p multilevel: without `Time stepping / Number of steps` and
+     * `Ramp-up steps` (shape from contour, whose multilevel schedule sets
+     * them and the finest level; parse_parameters() then leaves the
+     * expressions in h unevaluated until set_finest_level()).
+     */
     static void
     declare_parameters(dealii::ParameterHandler &prm,
                        const std::string        &extra_shapes        = "",
-                       const std::string        &extra_documentation = "");
+                       const std::string        &extra_documentation = "",
+                       const bool                multilevel          = false);
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const bool                multilevel = false);
+
+    /**
+     * Set the finest level, evaluate the expressions in h there and check
+     * the size of a uniform mesh.
+     */
+    void
+    set_finest_level(const unsigned int level);
 
     /**
      * Throw an InputError giving the number of cells and the memory

@@ -40,6 +40,24 @@ namespace PhaseField
    */
   namespace Images
   {
+    /** A gray image: values in [0,1], row by row from the bottom row. */
+    struct GrayImage
+    {
+      unsigned int        nx = 0;
+      unsigned int        ny = 0;
+      std::vector<double> gray;
+    };
+
+    /**
+     * Read the PNG image @p filename (gray, gray + alpha: the gray value;
+     * RGB(A): the mean of R, G, B). Missing files, files that are not PNG
+     * and damaged PNG files (truncated, wrong chunk checksums, undecodable
+     * data) become an InputError naming the file and @p parameter_name.
+     */
+    GrayImage
+    read_gray_image(const std::string &filename,
+                    const std::string &parameter_name);
+
     /**
      * Signed distance of the (damaged) input shape: `damaged circle`,
      * `cross`, `bar`, `image` (the PNG @p image_file, pixels darker than
@@ -98,6 +116,17 @@ namespace PhaseField
                   const unsigned int         n,
                   const Box2D               &region,
                   const std::string         &filename);
+
+    /**
+     * Write the RGB pixels @p rgb (3 bytes per pixel, @p nx x @p ny, row
+     * by row from the bottom) as the PNG file @p filename (VTK's PNG
+     * writer). Call on one rank only.
+     */
+    void
+    write_rgb_png(const std::vector<unsigned char> &rgb,
+                  const unsigned int                nx,
+                  const unsigned int                ny,
+                  const std::string                &filename);
 
     /**
      * Sample the Q1 function @p u (locally owned vector on @p dof_handler of

@@ -95,6 +95,16 @@ namespace PhaseField
     adapt_to_phase_field(BlockVector &fields);
 
     /**
+     * Make @p level (not below the current one) the finest level of the
+     * narrow band and refine the band of the phase field in block 0 of
+     * @p fields to it, transferring all blocks (constraints not yet
+     * distributed): the transition to a finer level of a multilevel
+     * schedule. Collective.
+     */
+    void
+    refine_to_level(const unsigned int level, BlockVector &fields);
+
+    /**
      * Write the mesh and all blocks of @p fields to the files
      * @p filename_base, @p filename_base_fixed.data and
      * @p filename_base.info (parallel::distributed::Triangulation::save()
@@ -216,12 +226,20 @@ namespace PhaseField
     std::vector<Vector>
     ghosted_copies(const BlockVector &fields) const;
 
+    /**
+     * Execute the flagged refinement and coarsening, set up the DoFs and
+     * interpolate the @p ghosted copies of @p fields to the new mesh.
+     */
+    void
+    execute_with_transfer(const std::vector<Vector> &ghosted,
+                          BlockVector               &fields);
+
     /** DoFs, constraints and lumped operators on the current mesh. */
     void
     setup_dofs();
 
-    const Settings settings;
-    MPI_Comm       mpi_communicator;
+    Settings settings;
+    MPI_Comm mpi_communicator;
 
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     dealii::FE_Q<dim>                                 fe;

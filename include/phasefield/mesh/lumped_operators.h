@@ -4,6 +4,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <phasefield/core/parameters.h>
@@ -115,6 +116,32 @@ namespace PhaseField
       const dealii::AffineConstraints<double> &constraints,
       const double                             min_cell_mass);
   };
+  /**
+   * Call @p f(column, value) for every stored entry of the locally owned
+   * row @p row of @p matrix (global indices), through Epetra's view of the
+   * row. deal.II's row iterators copy the row at every end(), which made
+   * assembling the 3-field Jacobian from L cost more than factorising it.
+   */
+  template <typename Function>
+  void
+  for_each_entry_in_row(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                        const dealii::types::global_dof_index         row,
+                        const Function                               &f)
+  {
+    const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
+    int                     n_entries = 0;
+    double                 *values    = nullptr;
+    int                    *columns   = nullptr;
+    m.ExtractMyRowView(m.LRID(static_cast<
+                         dealii::TrilinosWrappers::types::int_type>(row)),
+                       n_entries,
+                       values,
+                       columns);
+    for (int k = 0; k < n_entries; ++k)
+      f(static_cast<dealii::types::global_dof_index>(
+          dealii::TrilinosWrappers::global_column_index(m, columns[k])),
+        values[k]);
+  }
 } // namespace PhaseField
 
 #endif

@@ -78,6 +78,18 @@ namespace PhaseField
     virtual void
     initialize_fields();
 
+    /**
+     * Make the scheme of @p parameters (Time stepping / Scheme, epsilon,
+     * inner tau, Newton and linear-solver settings) with the outer energy
+     * of the setup.
+     */
+    void
+    create_scheme(const WillmoreParameters &parameters);
+
+    /** The first lines of the log: what runs, with which solver. */
+    void
+    print_header() const;
+
     const WillmoreParameters  &prm;
     const Setup                setup;
     const MPI_Comm             mpi_communicator;
@@ -85,11 +97,6 @@ namespace PhaseField
     dealii::TimerOutput        computing_timer;
     Discretization<dim>        discretization;
     BlockVector                solution;
-
-  private:
-    /** The first lines of the log: what runs, with which solver. */
-    void
-    print_header() const;
 
     std::unique_ptr<TimeSteppingScheme<dim>> scheme;
   };

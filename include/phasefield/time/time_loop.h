@@ -56,6 +56,33 @@ namespace PhaseField
       }
 
       /**
+       * Does the energy law of the scheme (TimeSteppingScheme::
+       * has_energy_law()) hold for a step of advance()? Not for a split
+       * step with a sub-step of another energy.
+       */
+      virtual bool
+      energy_law_applies() const
+      {
+        return true;
+      }
+
+      /**
+       * After the statistics row of step @p step with the @p energies of
+       * @p state: should the run end here, before its last step? (The
+       * automatic level transition of shape from contour.)
+       */
+      virtual bool
+      finished(const unsigned int step,
+               const BlockVector &state,
+               const Energies    &energies)
+      {
+        (void)step;
+        (void)state;
+        (void)energies;
+        return false;
+      }
+
+      /**
        * After the fields were transferred to a new mesh, before the
        * constraints are distributed and the scheme restores its fields
        * (edge restoration: the fixed values on the new mesh).
@@ -151,6 +178,33 @@ namespace PhaseField
     void
     resume(BlockVector &state);
 
+    /**
+     * Instead of run(): continue a series of runs on one statistics.csv
+     * and .pvd (the levels of a multilevel schedule, each with its own
+     * loop): append the row of @p state as step @p previous_step at
+     * @p start_time (no VTU output for it: the previous run wrote that
+     * step) and run steps previous_step + 1, ..., previous_step + the
+     * number of steps of the settings.
+     */
+    void
+    continue_run(BlockVector       &state,
+                 const unsigned int previous_step,
+                 const double       start_time);
+
+    /** The time reached. */
+    double
+    get_time() const
+    {
+      return time;
+    }
+
+    /** The last step taken (Client::finished() may end a run early). */
+    unsigned int
+    get_last_step() const
+    {
+      return last_step;
+    }
+
   private:
     /** The columns of statistics.csv. */
     std::vector<std::string>
@@ -205,12 +259,16 @@ namespace PhaseField
     void
     remesh(BlockVector &state);
 
-    /** Statistics row, progress line and (if due) output of step @p step. */
+    /**
+     * Statistics row, progress line and (if due and @p with_output) VTU
+     * output of step @p step.
+     */
     void
     record(const unsigned int step,
            const BlockVector &state,
            const StepReport  &report,
-           const double       tau);
+           const double       tau,
+           const bool         with_output = true);
 
     /** VTU output of the fields and the curvature. */
     void
@@ -225,9 +283,15 @@ namespace PhaseField
     dealii::Timer                     wall_timer;
     std::unique_ptr<StatisticsFile>   statistics;
 
-    /** Total number of steps (ramp-up and Tau). */
+    /** Number of steps of this run (ramp-up and Tau). */
     const unsigned int n_steps;
-    double             time = 0;
+    /** The step before the first step of this run (continue_run()). */
+    unsigned int step_offset = 0;
+    /** The last step of this run, step_offset + n_steps. */
+    unsigned int final_step;
+    /** The last step taken. */
+    unsigned int last_step = 0;
+    double       time      = 0;
     /** The step size the multipliers of the current state belong to. */
     double      state_tau;
     BlockVector old_state;

@@ -1,0 +1,167 @@
+#ifndef phasefield_problems_contour_problem_h
+#define phasefield_problems_contour_problem_h
+
+#include <deal.II/base/function.h>
+#include <memory>
+#include <phasefield/geometry/huffman_labeling.h>
+#include <phasefield/geometry/images.h>
+#include <phasefield/problems/contour_parameters.h>
+#include <phasefield/problems/phase_field_problem.h>
+#include <string>
+#include <vector>
+
+namespace PhaseField
+{
+  /**
+   * Shape from apparent contour (thesis chapter 6): find a shape whose
+   * Huffman labeling along the last axis is the given alpha*, minimising
+   * the regularisation energy of (6.3),
+   *
+   *   eta a_eps[u] + mu (eps/2) ||(v-u)/ttau||^2 + gamma ||alpha* - alpha[u]||^2,
+   *
+   * by the operator splitting of Algorithm 6.1, one step of size tau:
+   *
+   *  1. a nested step (thesis chapter 3) of the regularisation (weights mu,
+   *     eta) with tau/2: (U, V, P)^{k+1/3};
+   *  2. an explicit gradient step of the mismatch with tau and the lumped
+   *     mass: eps M (U^{k+2/3} - U^{k+1/3}) = -tau G(U^{k+1/3}), with G the
+   *     exact derivative of the discrete mismatch j (HuffmanLabeling);
+   *     V, P unchanged;
+   *  3. a nested step with tau/2 from U^{k+2/3}: (U, V, P)^{k+1}.
+   *
+   * The discrete j is gamma times the Gauss quadrature on the pixel grid
+   * of (alpha* - alpha[U])^2, so the thesis's printed step, which applies
+   * gamma twice and drops the sign of the variation, is replaced by the
+   * derivative of the discrete functional.
+   *
+   * Multilevel (thesis 6.4): the levels of `Multilevel / Levels` coarse to
+   * fine, each with its own epsilon, tau, inner tau (the expressions in h
+   * at its h), pixel grid and target labeling. At a transition U, V, P are
+   * transferred to the band refined to the new level and V, P are solved
+   * again for U by Algorithm 3.1 (they are the inner minimiser and its
+   * multiplier for the coarse level's epsilon and inner tau, not the new
+   * ones). The move to the next level is fixed or automatic
+   * (MultilevelParameters).
+   *
+   * Output, beyond willmore_flow's: the statistics columns level,
+   * mismatch_energy (j with gamma), labeling_error (Int |alpha* -
+   * alpha[U]| dx'), total_energy ((6.3), thesis units); labeling.csv and
+   * labeling_level_<L>.csv, and a picture per level (contour_output.h).
+   */
+  template <int dim>
+  class ContourProblem : public PhaseFieldProblem<dim>
+  {
+  public:
+    using typename PhaseFieldProblem<dim>::Vector;
+    using typename PhaseFieldProblem<dim>::BlockVector;
+
+    /** @p parameters must outlive the problem. */
+    explicit ContourProblem(const ContourParameters &parameters);
+
+    /** All levels; throws on failure. */
+    void
+    run() override;
+
+    /** One step of Algorithm 6.1 (nested tau/2, mismatch tau, nested tau/2). */
+    StepReport
+    advance(TimeSteppingScheme<dim> &scheme,
+            const BlockVector       &old_state,
+            BlockVector             &state,
+            const double             tau) override;
+
+    /** The split step has no energy law of the nested scheme. */
+    bool
+    energy_law_applies() const override
+    {
+      return false;
+    }
+
+    /** The automatic level transition. */
+    bool
+    finished(const unsigned int step,
+             const BlockVector &state,
+             const Energies    &energies) override;
+
+    /** level, mismatch_energy, labeling_error, total_energy. */
+    std::vector<std::string>
+    extra_columns() const override;
+
+    std::vector<double>
+    extra_values(const BlockVector &state,
+                 const Energies    &energies) const override;
+
+    /** The target labeling on the current level's pixel grid. */
+    const std::vector<double> &
+    target_labeling() const
+    {
+      return target;
+    }
+
+    /** The current pixel grid. */
+    const HuffmanLabeling::LabelingGrid<dim> &
+    labeling_grid() const
+    {
+      return *grid;
+    }
+
+    /** The labeling and its mismatch with the target. */
+    struct Mismatch
+    {
+      /** alpha[U] at the points of the grid. */
+      std::vector<double> alpha;
+      /** j = gamma Int (alpha* - alpha[U])^2 dx'. */
+      double energy;
+      /** Int |alpha* - alpha[U]| dx'. */
+      double labeling_error;
+    };
+
+    /** The mismatch of U in @p state on the current pixel grid. */
+    Mismatch
+    mismatch(const BlockVector &state) const;
+
+  private:
+    /**
+     * Set the pixel grid and the target labeling of level number
+     * @p index, and the parameters of that level.
+     */
+    void
+    start_level(const unsigned int index);
+
+    /** The next level: refine the band, new scheme, V and P for U. */
+    void
+    move_to_level(const unsigned int index);
+
+    /** Step 2 of Algorithm 6.1 on U in @p state. */
+    void
+    mismatch_step(BlockVector &state, const double tau) const;
+
+    /** Total energy (6.3) of a state with @p energies and mismatch @p j. */
+    double
+    total_energy(const Energies &energies, const double j) const;
+
+    /** The target labeling on @p target_grid. */
+    std::vector<double>
+    target_on(const HuffmanLabeling::LabelingGrid<dim> &target_grid) const;
+
+    /** labeling_level_<L>.csv (and labeling.csv) and the picture. */
+    void
+    write_level_results(const bool last_level);
+
+    /** U ghosted (for the column integrals). */
+    Vector
+    ghosted_u(const BlockVector &state) const;
+
+    const ContourParameters                            &parameters;
+    /** The parameters of the current level. */
+    WillmoreParameters                                  level_prm;
+    unsigned int                                        level_index = 0;
+    std::unique_ptr<HuffmanLabeling::LabelingGrid<dim>> grid;
+    std::vector<double>                                 target;
+    /** Target = image: the image. */
+    Images::GrayImage target_image;
+    /** Total energy after every step of the current level. */
+    std::vector<double> energy_history;
+  };
+} // namespace PhaseField
+
+#endif

@@ -1,0 +1,226 @@
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <phasefield/core/statistics.h>
+#include <phasefield/geometry/images.h>
+#include <phasefield/problems/contour_output.h>
+
+namespace PhaseField
+{
+  namespace ContourOutput
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /** Pictures are at least this many pixels wide. */
+      constexpr unsigned int min_picture_width = 512;
+
+      using Colour = std::array<unsigned char, 3>;
+      constexpr Colour white{{255, 255, 255}};
+      constexpr Colour grid_gray{{200, 200, 200}};
+      constexpr Colour target_blue{{0, 60, 255}};
+      constexpr Colour current_red{{230, 0, 0}};
+
+      /** An RGB canvas with rows from the bottom. */
+      struct Canvas
+      {
+        Canvas(const unsigned int nx, const unsigned int ny)
+          : nx(nx)
+          , ny(ny)
+          , rgb(3 * nx * ny, 255)
+        {}
+
+        void
+        set(const unsigned int x, const unsigned int y, const Colour &c)
+        {
+          std::copy(c.begin(), c.end(), rgb.begin() + 3 * (y * nx + x));
+        }
+
+        unsigned int               nx, ny;
+        std::vector<unsigned char> rgb;
+      };
+
+      /** Gray value of @p t in [0,1] (0 black). */
+      Colour
+      gray(const double t)
+      {
+        const auto g =
+          static_cast<unsigned char>(std::lround(255 * std::clamp(t, 0., 1.)));
+        return {{g, g, g}};
+      }
+
+      /** The largest label to show: even, at least 2. */
+      template <int dim>
+      double
+      top_label(const Labelings<dim> &labelings)
+      {
+        double top = 2;
+        for (const auto *values : {&labelings.target, &labelings.alpha})
+          for (const double a : *values)
+            top = std::max(top, 2 * std::ceil(a / 2 - 1e-6));
+        return top;
+      }
+
+      /** Magnification of the pixel grid in the picture. */
+      unsigned int
+      magnification(const unsigned int n)
+      {
+        return std::max(1u, min_picture_width / n);
+      }
+
+      /**
+       * 2D: the phase field sampled at @p width x @p width pixels above a
+       * plot of both labelings over the image line.
+       */
+      void
+      draw_2d(const Labelings<2>        &labelings,
+              const std::vector<double> &u,
+              const unsigned int         width,
+              const std::string         &filename)
+      {
+        const unsigned int n      = labelings.grid.pixels_per_direction();
+        const unsigned int scale  = width / n;
+        const unsigned int height = width / 2;
+        Canvas             canvas(width, height + width);
+        for (unsigned int y = 0; y < width; ++y)
+          for (unsigned int x = 0; x < width; ++x)
+            canvas.set(x, height + y, gray(0.5 * (u[y * width + x] + 1)));
+        const double top = top_label(labelings);
+        const auto   row = [&](const double a) {
+          return static_cast<int>(std::lround(a / top * (height - 1)));
+        };
+        for (unsigned int label = 0; label <= top; label += 2)
+          for (unsigned int x = 0; x < width; ++x)
+            canvas.set(x, row(label), grid_gray);
+        for (const auto &[values, colour] :
+             {std::make_pair(&labelings.target, target_blue),
+              std::make_pair(&labelings.alpha, current_red)})
+          for (unsigned int x = 0; x < width; ++x)
+            {
+              // a vertical segment joins the value to that of the last pixel
+              const int now  = row((*values)[x / scale]);
+              const int last = x == 0 ? now : row((*values)[(x - 1) / scale]);
+              for (int y = std::min(now, last); y <= std::max(now, last); ++y)
+                canvas.set(x, y, colour);
+            }
+        Images::write_rgb_png(canvas.rgb, canvas.nx, canvas.ny, filename);
+      }
+
+      /**
+       * Is pixel @p i on the contour of @p f at level @p c: does f - c
+       * change sign to its right or upper neighbour?
+       */
+      bool
+      on_contour(const std::vector<double> &f,
+                 const unsigned int         n,
+                 const unsigned int         i,
+                 const double               c)
+      {
+        const unsigned int x = i % n, y = i / n;
+        const bool         below = f[i] < c;
+        return (x + 1 < n && (f[i + 1] < c) != below) ||
+               (y + 1 < n && (f[i + n] < c) != below);
+      }
+
+      /** 3D: alpha[U] in gray with the odd-level contours of both. */
+      void
+      draw_3d(const Labelings<3> &labelings, const std::string &filename)
+      {
+        const unsigned int n     = labelings.grid.pixels_per_direction();
+        const unsigned int scale = magnification(n);
+        const double       top   = top_label(labelings);
+        Canvas             canvas(n * scale, n * scale);
+        for (unsigned int y = 0; y < canvas.ny; ++y)
+          for (unsigned int x = 0; x < canvas.nx; ++x)
+            {
+              const unsigned int i = (y / scale) * n + x / scale;
+              Colour             c = gray(labelings.alpha[i] / top);
+              // the line at the upper/right edge of the pixel block
+              const bool edge = (x + 1) % scale == 0 || (y + 1) % scale == 0 ||
+                                scale == 1;
+              for (double level = 1; level < top; level += 2)
+                {
+                  if (edge && on_contour(labelings.alpha, n, i, level))
+                    c = current_red;
+                  if (edge && on_contour(labelings.target, n, i, level))
+                    c = target_blue;
+                }
+              canvas.set(x, y, c);
+            }
+        Images::write_rgb_png(canvas.rgb, canvas.nx, canvas.ny, filename);
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    write_csv(const Labelings<dim> &labelings,
+              const std::string    &filename,
+              const MPI_Comm        comm)
+    {
+      run_on_root(comm, [&]() {
+        std::ofstream file(filename);
+        AssertThrow(file, ExcMessage("Cannot write <" + filename + ">."));
+        file << (dim == 2 ? "x," : "x,y,") << "alpha_target,alpha\n"
+             << std::setprecision(10);
+        for (unsigned int i = 0; i < labelings.grid.size(); ++i)
+          {
+            const Point<dim - 1> p = labelings.grid.point(i);
+            for (unsigned int k = 0; k + 1 < dim; ++k)
+              file << p[k] << ',';
+            file << labelings.target[i] << ',' << labelings.alpha[i] << '\n';
+          }
+      });
+    }
+
+
+
+    template <int dim>
+    void
+    write_picture(const Labelings<dim>                &labelings,
+                  const Discretization<dim>           &discretization,
+                  const TrilinosWrappers::MPI::Vector &u,
+                  const std::string                   &filename)
+    {
+      const MPI_Comm comm = discretization.get_mpi_communicator();
+      if constexpr (dim == 2)
+        {
+          const unsigned int width =
+            labelings.grid.pixels_per_direction() *
+            magnification(labelings.grid.pixels_per_direction());
+          const std::vector<double> samples =
+            Images::sample_on_pixel_grid(discretization.get_dof_handler(),
+                                         u,
+                                         width);
+          run_on_root(comm,
+                      [&]() { draw_2d(labelings, samples, width, filename); });
+        }
+      else
+        {
+          (void)u;
+          run_on_root(comm, [&]() { draw_3d(labelings, filename); });
+        }
+    }
+
+
+
+    template void
+    write_csv(const Labelings<2> &, const std::string &, const MPI_Comm);
+    template void
+    write_csv(const Labelings<3> &, const std::string &, const MPI_Comm);
+    template void
+    write_picture(const Labelings<2> &,
+                  const Discretization<2> &,
+                  const TrilinosWrappers::MPI::Vector &,
+                  const std::string &);
+    template void
+    write_picture(const Labelings<3> &,
+                  const Discretization<3> &,
+                  const TrilinosWrappers::MPI::Vector &,
+                  const std::string &);
+  } // namespace ContourOutput
+} // namespace PhaseField

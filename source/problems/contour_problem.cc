@@ -1,0 +1,360 @@
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <phasefield/core/constants.h>
+#include <phasefield/core/statistics.h>
+#include <phasefield/geometry/shapes.h>
+#include <phasefield/problems/contour_output.h>
+#include <phasefield/problems/contour_problem.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** The setup of the contour problem for PhaseFieldProblem. */
+    template <int dim>
+    typename PhaseFieldProblem<dim>::Setup
+    contour_setup(const ContourParameters &parameters)
+    {
+      typename PhaseFieldProblem<dim>::Setup setup;
+      setup.program_name    = "shape_from_contour";
+      setup.signed_distance = Shapes::create_signed_distance<dim>(
+        parameters.willmore.geometry);
+      setup.outer_energy.willmore_weight = parameters.model.willmore_weight;
+      setup.outer_energy.area_weight     = parameters.model.area_weight;
+      return setup;
+    }
+
+    /** The sum of the Newton and linear iterations of two sub-steps. */
+    StepReport
+    combine(const StepReport &first, const StepReport &second)
+    {
+      StepReport sum = second;
+      sum.newton_iterations += first.newton_iterations;
+      sum.linear_iterations += first.linear_iterations;
+      sum.initial_residual_norm = first.initial_residual_norm;
+      return sum;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  ContourProblem<dim>::ContourProblem(const ContourParameters &parameters)
+    : PhaseFieldProblem<dim>(parameters.willmore,
+                             contour_setup<dim>(parameters))
+    , parameters(parameters)
+    , level_prm(parameters.willmore)
+  {
+    if (parameters.target.is_image())
+      target_image = Images::read_gray_image(parameters.target.image_file,
+                                             "Target / Image file");
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::run()
+  {
+    create_output_directory(this->prm.output_directory,
+                            this->mpi_communicator);
+    this->create_scheme(level_prm);
+    this->print_header();
+    this->pcout << "levels";
+    for (const unsigned int level : parameters.multilevel.levels)
+      this->pcout << ' ' << level;
+    this->pcout << ", mu = " << parameters.model.willmore_weight
+                << ", eta = " << parameters.model.area_weight
+                << ", gamma = " << parameters.model.mismatch_weight
+                << std::endl;
+    {
+      TimerOutput::Scope t(this->computing_timer, "mesh: initial");
+      this->discretization.create_mesh(this->setup.signed_distance.get(),
+                                       level_prm.model.epsilon);
+    }
+    {
+      TimerOutput::Scope t(this->computing_timer, "initialisation");
+      this->initialize_fields();
+    }
+    unsigned int step = 0;
+    double       time = 0;
+    for (unsigned int i = 0; i < parameters.multilevel.levels.size(); ++i)
+      {
+        if (i > 0)
+          move_to_level(i);
+        start_level(i);
+        TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(level_prm),
+                                this->discretization,
+                                *this->scheme,
+                                *this,
+                                this->pcout,
+                                this->computing_timer);
+        if (i == 0)
+          time_loop.run(this->solution);
+        else
+          time_loop.continue_run(this->solution, step, time);
+        step = time_loop.get_last_step();
+        time = time_loop.get_time();
+        write_level_results(i + 1 == parameters.multilevel.levels.size());
+      }
+    this->computing_timer.print_summary();
+    print_peak_memory(this->pcout, this->mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::start_level(const unsigned int index)
+  {
+    TimerOutput::Scope t(this->computing_timer, "labeling: target");
+    level_index = index;
+    level_prm   = parameters.for_level(index);
+    grid        = std::make_unique<HuffmanLabeling::LabelingGrid<dim>>(
+      level_prm.mesh.finest_level);
+    target = target_on(*grid);
+    energy_history.clear();
+    this->pcout << "level " << level_prm.mesh.finest_level
+                << ": h = " << level_prm.mesh.h()
+                << ", epsilon = " << level_prm.model.epsilon
+                << ", tau = " << level_prm.model.tau
+                << ", inner tau = " << level_prm.model.inner_tau << ", "
+                << level_prm.model.n_steps << " steps"
+                << (parameters.multilevel.transition ==
+                        LevelTransition::automatic ?
+                      " at most" :
+                      "")
+                << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::move_to_level(const unsigned int index)
+  {
+    const WillmoreParameters next = parameters.for_level(index);
+    {
+      TimerOutput::Scope t(this->computing_timer, "mesh: level transition");
+      this->discretization.refine_to_level(next.mesh.finest_level,
+                                           this->solution);
+      this->discretization.distribute_constraints(this->solution);
+    }
+    TimerOutput::Scope t(this->computing_timer, "initialisation");
+    this->create_scheme(next);
+    // V and P are the inner minimiser and its multiplier for the coarse
+    // epsilon and inner tau: solve them again for U (Algorithm 3.1)
+    this->scheme->initialize(this->solution, next.model.tau);
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContourProblem<dim>::target_on(
+    const HuffmanLabeling::LabelingGrid<dim> &target_grid) const
+  {
+    if (parameters.target.is_image())
+      return HuffmanLabeling::labeling_of_image(target_image.gray,
+                                                target_image.nx,
+                                                target_image.ny,
+                                                parameters.target.maximum_label,
+                                                target_grid,
+                                                "Target / Image file");
+    const std::unique_ptr<Function<dim>> distance =
+      Shapes::create_signed_distance<dim>(parameters.target.shape);
+    const Shapes::PhaseFieldProfile<dim> phase_field(*distance,
+                                                     level_prm.model.epsilon);
+    return HuffmanLabeling::labeling_of_function(phase_field,
+                                                 target_grid,
+                                                 this->mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  typename ContourProblem<dim>::Vector
+  ContourProblem<dim>::ghosted_u(const BlockVector &state) const
+  {
+    const LumpedOperators<dim> &ops = this->discretization.get_operators();
+    Vector                      u(ops.locally_owned_dofs,
+                 ops.locally_relevant_dofs,
+                 this->mpi_communicator);
+    u = state.block(0);
+    return u;
+  }
+
+
+
+  template <int dim>
+  typename ContourProblem<dim>::Mismatch
+  ContourProblem<dim>::mismatch(const BlockVector &state) const
+  {
+    Mismatch m;
+    m.alpha = HuffmanLabeling::labeling(this->discretization.get_dof_handler(),
+                                        ghosted_u(state),
+                                        *grid);
+    std::vector<double> squared(grid->size()), absolute(grid->size());
+    for (unsigned int i = 0; i < grid->size(); ++i)
+      {
+        squared[i]  = std::pow(target[i] - m.alpha[i], 2);
+        absolute[i] = std::abs(target[i] - m.alpha[i]);
+      }
+    m.energy = parameters.model.mismatch_weight * grid->integrate(squared);
+    m.labeling_error = grid->integrate(absolute);
+    return m;
+  }
+
+
+
+  template <int dim>
+  StepReport
+  ContourProblem<dim>::advance(TimeSteppingScheme<dim> &scheme,
+                               const BlockVector       &old_state,
+                               BlockVector             &state,
+                               const double             tau)
+  {
+    // the time loop keeps P for steps of size tau; the nested sub-steps
+    // have tau/2
+    const double half = 0.5 * tau;
+    scheme.prepare_step(state, tau, half);
+    const StepReport first = scheme.advance(old_state, state, half);
+    if (!first.converged)
+      return first;
+    {
+      TimerOutput::Scope t(this->computing_timer, "labeling: mismatch step");
+      mismatch_step(state, tau);
+    }
+    const BlockVector middle = state;
+    const StepReport  second = scheme.advance(middle, state, half);
+    scheme.prepare_step(state, half, tau);
+    return combine(first, second);
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::mismatch_step(BlockVector &state, const double tau) const
+  {
+    const Vector        u     = ghosted_u(state);
+    const Mismatch      m     = mismatch(state);
+    const double        gamma = parameters.model.mismatch_weight;
+    std::vector<double> r(grid->size());
+    for (unsigned int i = 0; i < grid->size(); ++i)
+      r[i] = 2 * gamma * grid->weight(i) * (m.alpha[i] - target[i]);
+    Vector gradient(state.block(0));
+    gradient = 0;
+    HuffmanLabeling::add_labeling_derivative(
+      this->discretization.get_dof_handler(),
+      this->discretization.get_constraints(),
+      u,
+      *grid,
+      r,
+      gradient);
+    // eps M (U - U^{k+1/3}) = -tau G with the lumped mass M
+    gradient.scale(this->discretization.get_operators().inverse_lumped_mass);
+    state.block(0).add(-tau / level_prm.model.epsilon, gradient);
+    this->discretization.get_constraints().distribute(state.block(0));
+  }
+
+
+
+  template <int dim>
+  double
+  ContourProblem<dim>::total_energy(const Energies &energies,
+                                    const double    j) const
+  {
+    return (parameters.model.willmore_weight * energies.willmore +
+            parameters.model.area_weight * energies.area) /
+             Constants::geometric_unit +
+           j;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContourProblem<dim>::finished(const unsigned int step,
+                                const BlockVector &state,
+                                const Energies    &energies)
+  {
+    (void)step;
+    if (parameters.multilevel.transition != LevelTransition::automatic)
+      return false;
+    energy_history.push_back(total_energy(energies, mismatch(state).energy));
+    const unsigned int window = parameters.multilevel.window;
+    if (energy_history.size() <= window)
+      return false;
+    const double now      = energy_history.back();
+    const double decrease = energy_history[energy_history.size() - 1 - window] -
+                            now;
+    if (decrease >= parameters.multilevel.tolerance * std::abs(now))
+      return false;
+    this->pcout << "  total energy decreased by " << decrease << " over "
+                << window
+                << " steps: moving on (Multilevel / Transition = automatic)"
+                << std::endl;
+    return true;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContourProblem<dim>::extra_columns() const
+  {
+    return {"level", "mismatch_energy", "labeling_error", "total_energy"};
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContourProblem<dim>::extra_values(const BlockVector &state,
+                                    const Energies    &energies) const
+  {
+    const Mismatch m = mismatch(state);
+    return {double(level_prm.mesh.finest_level),
+            m.energy,
+            m.labeling_error,
+            total_energy(energies, m.energy)};
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::write_level_results(const bool last_level)
+  {
+    TimerOutput::Scope t(this->computing_timer, "output: labelings");
+    const HuffmanLabeling::LabelingGrid<dim> centres(grid->level(), true);
+    ContourOutput::Labelings<dim> labelings{
+      centres,
+      target_on(centres),
+      HuffmanLabeling::labeling(this->discretization.get_dof_handler(),
+                                ghosted_u(this->solution),
+                                centres)};
+    const std::string directory = this->prm.output_directory;
+    const std::string level     = std::to_string(grid->level());
+    ContourOutput::write_csv(labelings,
+                             directory + "/labeling_level_" + level + ".csv",
+                             this->mpi_communicator);
+    if (last_level)
+      ContourOutput::write_csv(labelings,
+                               directory + "/labeling.csv",
+                               this->mpi_communicator);
+    ContourOutput::write_picture(labelings,
+                                 this->discretization,
+                                 this->solution.block(0),
+                                 directory + "/contour_level_" + level +
+                                   ".png");
+  }
+
+
+
+  template class ContourProblem<2>;
+  template class ContourProblem<3>;
+} // namespace PhaseField
