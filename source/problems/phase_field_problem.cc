@@ -58,6 +58,7 @@ namespace PhaseField
     settings.outer_energy  = setup.outer_energy;
     settings.newton        = prm.newton;
     settings.linear_solver = prm.linear_solver;
+    settings.augmented_lagrangian = prm.augmented_lagrangian;
     settings.verbose       = prm.output.verbose;
     scheme = create_time_stepping_scheme<dim>(settings, discretization, pcout);
     TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(prm),
