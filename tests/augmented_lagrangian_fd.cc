@@ -21,8 +21,8 @@
 
 using namespace dealii;
 using namespace PhaseField;
-using BlockVector = TrilinosWrappers::MPI::BlockVector;
-using Vector      = TrilinosWrappers::MPI::Vector;
+using TBlockVector = TrilinosWrappers::MPI::BlockVector;
+using TVector      = TrilinosWrappers::MPI::Vector;
 
 namespace
 {
@@ -45,6 +45,7 @@ void
 check(const bool double_well, const bool scaled, const double penalty)
 {
   const MPI_Comm                       comm = MPI_COMM_WORLD;
+  (void)comm;
   const Testing::AdaptiveTestMesh<dim> mesh;
   const LumpedOperators<dim>          &ops = mesh.operators;
   const double                         h   = mesh.h;
@@ -52,10 +53,10 @@ check(const bool double_well, const bool scaled, const double penalty)
   // a smooth state and direction: the profile of the test sphere plus
   // cosine waves
   Functions::CosineFunction<dim> wave;
-  Vector                         w(ops.locally_owned_dofs, comm);
+  TVector                         w(ops.locally_owned_dofs, comm);
   VectorTools::interpolate(mesh.dof_handler, wave, w);
   const Shapes::PhaseFieldProfile<dim> profile(mesh.sphere, mesh.eps);
-  Vector                               u0(w), forcing(w), p(w);
+  TVector                               u0(w), forcing(w), p(w);
   VectorTools::interpolate(mesh.dof_handler, profile, u0);
 
   NestedCoefficients coeff;
@@ -69,11 +70,11 @@ check(const bool double_well, const bool scaled, const double penalty)
       forcing.scale(ops.lumped_mass);
       coeff.outer.forcing = &forcing;
     }
-  Vector old_u(u0);
+  TVector old_u(u0);
   old_u.add(0.05, w);
   AugmentedLagrangianStep<dim> step(mesh.discretization, coeff, old_u, scaled);
 
-  BlockVector x = step.make_point(), d = step.make_point();
+  TBlockVector x = step.make_point(), d = step.make_point();
   x.block(0)    = u0;
   x.block(1)    = u0;
   x.block(1).add(0.02, w);
@@ -96,7 +97,7 @@ check(const bool double_well, const bool scaled, const double penalty)
 
   AugmentedLagrangianObjective objective(step, p, penalty);
   const double                 fd_step = 1e-6;
-  BlockVector                  xp(x), xm(x), g(x), gp(x), gm(x), hd(x);
+  TBlockVector                  xp(x), xm(x), g(x), gp(x), gm(x), hd(x);
   xp.add(fd_step, d);
   xm.add(-fd_step, d);
   mesh.discretization.distribute_constraints(xp);
@@ -120,7 +121,7 @@ check(const bool double_well, const bool scaled, const double penalty)
 
   // Steihaug-Toint: decrease of the model, inside the B-norm radius
   const double      radius = 1e-3;
-  BlockVector       s(x), bs(x);
+  TBlockVector       s(x);
   TruncatedCGResult cg = truncated_cg(objective, g, radius, 1e-12, 500, s);
   objective.hessian_vmult(s, hd);
   const double model = g * s + 0.5 * (s * hd);

@@ -215,6 +215,50 @@ namespace PhaseField
                                                      const Vector      &y,
                                                      const double penalty)
   {
+    if (schur_solver != nullptr)
+      setup_schur(x, penalty);
+    else
+      setup_block_jacobi(x, y, penalty);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::setup_schur(const BlockVector &x,
+                                            const double       penalty)
+  {
+    const double s     = f_scale;
+    const double a     = weights.a;
+    const double beta  = s * (1 + a) + penalty;
+    schur_beta         = beta;
+    schur_penalty      = penalty;
+    schur_v            = x.block(x_v);
+    const Vector &v    = x.block(x_v);
+    Vector        k_hat_weight(v);
+    for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+      k_hat_weight.begin()[i] = weights.k(v.begin()[i], a / (1 + a));
+    TrilinosWrappers::SparseMatrix k_hat;
+    ops.stiffness_plus_weighted_mass(weights.inner_tau, k_hat_weight, k_hat);
+    Vector weight(ops.inverse_lumped_mass);
+    weight *= penalty * s * (1 + a) / beta;
+    k_hat.mmult(schur, k_hat, weight);
+    Vector diagonal(ops.lumped_mass);
+    diagonal *= s * a / beta * (s + penalty / (1 + a));
+    ops.add_to_diagonal(diagonal, schur);
+    schur_solver->reset();
+    schur_solver->set_constant_matrix(true);
+    schur_solver->factorize(schur);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::setup_block_jacobi(const BlockVector &x,
+                                                   const Vector      &y,
+                                                   const double       penalty)
+  {
     inverse_uu.reinit(y, true);
     inverse_uv.reinit(y, true);
     inverse_vv.reinit(y, true);
@@ -264,6 +308,35 @@ namespace PhaseField
   AugmentedLagrangianStep<dim>::precondition(const BlockVector &r,
                                              BlockVector       &z) const
   {
+    if (schur_solver != nullptr)
+      {
+        // B z = r: w = (beta M)^-1 r_U, S_V z_V = r_V + (s a M + lambda K) w,
+        // z_U = (beta M)^-1 (r_U + (s a M + lambda K) z_V)
+        const double s_a = f_scale * weights.a;
+        const auto   coupling = [&](const Vector &in, Vector &out) {
+          k_vmult(schur_v, in, out);
+          out *= schur_penalty;
+          Vector mass_part(in);
+          mass_part.scale(ops.lumped_mass);
+          out.add(s_a, mass_part);
+          ops.zero_constrained(out);
+        };
+        Vector w(r.block(x_u)), rhs(w), cz(w);
+        w.scale(ops.inverse_lumped_mass);
+        w /= schur_beta;
+        ops.zero_constrained(w);
+        coupling(w, rhs);
+        rhs += r.block(x_v);
+        schur_solver->solve(schur, z.block(x_v), rhs);
+        ops.zero_constrained(z.block(x_v));
+        coupling(z.block(x_v), cz);
+        cz += r.block(x_u);
+        cz.scale(ops.inverse_lumped_mass);
+        cz /= schur_beta;
+        ops.zero_constrained(cz);
+        z.block(x_u) = cz;
+        return;
+      }
     const unsigned int n = r.block(x_u).locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -300,7 +373,14 @@ namespace PhaseField
     , pcout(pcout)
     , nested(settings, discretization, pcout)
     , next_penalty(settings.augmented_lagrangian.initial_penalty)
-  {}
+  {
+    if (LinearSolver::resolve_type(settings.linear_solver.type, dim) ==
+        LinearSolverType::direct)
+      schur_solver = std::make_unique<LinearSolver>(
+        LinearSolverType::direct,
+        settings.linear_solver.relative_tolerance,
+        settings.linear_solver.max_iterations);
+  }
 
 
 
@@ -326,8 +406,11 @@ namespace PhaseField
   std::string
   AugmentedLagrangianScheme<dim>::linear_solver_description() const
   {
-    return "matrix-free trust region (Steihaug-Toint truncated CG, nodal "
-           "block-Jacobi preconditioner)";
+    return schur_solver ?
+             "trust region, Steihaug-Toint truncated CG with matrix-free "
+             "Hessian products, Schur-complement preconditioner (MUMPS)" :
+             "trust region, Steihaug-Toint truncated CG with matrix-free "
+             "Hessian products, nodal block-Jacobi preconditioner";
   }
 
 
@@ -394,6 +477,8 @@ namespace PhaseField
                                       nested.coefficients(tau),
                                       old_state.block(Field::U),
                                       settings.augmented_lagrangian.scaled);
+    if (schur_solver)
+      step.set_schur_solver(*schur_solver);
     BlockVector x = step.make_point();
     x.block(0)    = state.block(Field::U);
     x.block(1)    = state.block(Field::V);

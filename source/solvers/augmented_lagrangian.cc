@@ -157,7 +157,8 @@ namespace PhaseField
         if (report.constraint_norm <= eta)
           {
             if (report.constraint_norm <= control.constraint_tolerance &&
-                tr.gradient_norm <= control.gradient_tolerance)
+                (tr.gradient_norm <= control.gradient_tolerance ||
+                 tr.at_roundoff))
               {
                 report.converged = true;
                 return report;

@@ -23,6 +23,17 @@ namespace PhaseField
       return (-sBd + std::sqrt(sBd * sBd + dBd * gap)) / dBd;
     }
 
+    /** Are the actual and the model decrease both below round-off? */
+    bool
+    is_noise(const double value,
+             const double trial_value,
+             const double model_decrease)
+    {
+      const double noise = Constants::roundoff * (1 + std::abs(value));
+      return std::abs(model_decrease) <= noise &&
+             std::abs(value - trial_value) <= noise;
+    }
+
     /**
      * rho = actual / predicted decrease; 1 if both are below round-off of
      * @p value, -1 if the trial value or the ratio is not finite.
@@ -33,10 +44,9 @@ namespace PhaseField
                     const double model_decrease)
     {
       const double actual = value - trial_value;
-      const double noise  = Constants::roundoff * (1 + std::abs(value));
       if (!std::isfinite(trial_value))
         return -1;
-      if (std::abs(model_decrease) <= noise && std::abs(actual) <= noise)
+      if (is_noise(value, trial_value, model_decrease))
         return 1;
       const double rho = actual / model_decrease;
       return std::isfinite(rho) ? rho : -1.;
@@ -146,10 +156,19 @@ namespace PhaseField
                             TrustRegion::max_radius_factor * initial_radius);
         if (rho > TrustRegion::accept_ratio)
           {
-            x     = trial;
-            value = trial_value;
+            const double previous_norm = report.gradient_norm;
+            const double old_value     = value;
+            x                          = trial;
+            value                      = trial_value;
             objective.gradient(x, g);
             report.gradient_norm = objective.gradient_norm(g);
+            // round-off: no measurable decrease and the gradient stagnates
+            if (is_noise(old_value, trial_value, step.model_decrease) &&
+                report.gradient_norm > TrustRegion::stagnation * previous_norm)
+              {
+                report.at_roundoff = true;
+                break;
+              }
           }
       }
     report.converged = true;

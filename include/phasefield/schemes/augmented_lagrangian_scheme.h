@@ -9,6 +9,7 @@
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/solvers/augmented_lagrangian.h>
+#include <phasefield/solvers/linear_solver.h>
 
 /**
  * The nested step of thesis chapter 3 solved as in thesis chapter 7: the
@@ -40,7 +41,17 @@ namespace PhaseField
    * is the (U, V) of the nested step's saddle point; the multipliers are
    * related by P_AL = -2 s P_nested.
    *
-   * The preconditioner is nodal block Jacobi: at every DoF the 2x2 block
+   * Preconditioner with a solver set by set_schur_solver() (the direct
+   * solver, 2D): B = f'' + lambda J^T M^-1 J (the Hessian without the
+   * third-derivative term), inverted exactly by eliminating U (its UU
+   * block (s(1+a) + lambda) M is diagonal; here s = f_scale):
+   *
+   *   S_V = (lambda s (1+a)/beta) Khat M^-1 Khat
+   *         + (s a/beta)(s + lambda/(1+a)) M,
+   *   beta = s(1+a) + lambda,  Khat = K - a/(1+a) M,
+   *
+   * assembled and factorised once per trust-region iterate.
+   * Without a solver it is nodal block Jacobi: at every DoF the 2x2 block
    * of the Hessian of l_A (with diag(K M^-1 K)_ii approximated by
    * sum_j K_ij^2 / m_i), made positive definite by dropping first the
    * Psi''' term and then the U-V coupling where it is not.
@@ -96,6 +107,16 @@ namespace PhaseField
     distribute_constraints(BlockVector &x) const override;
 
     /**
+     * Use the exact Schur-complement preconditioner with @p solver (must
+     * be of the direct type and outlive this object).
+     */
+    void
+    set_schur_solver(LinearSolver &solver)
+    {
+      schur_solver = &solver;
+    }
+
+    /**
      * A two-block vector (U, V) in the layout of the DoFs, zero.
      */
     BlockVector
@@ -121,8 +142,24 @@ namespace PhaseField
     const double f_scale;
     /** R_P of the nested step: c(x). */
     const NestedStep<dim> nested_step;
+    /** Nodal block Jacobi (no Schur solver). */
+    void
+    setup_block_jacobi(const BlockVector &x,
+                       const Vector      &y,
+                       const double       penalty);
+    /** The Schur complement S_V of the class documentation, factorised. */
+    void
+    setup_schur(const BlockVector &x, const double penalty);
+
     /** Entries of the inverse nodal 2x2 blocks of the preconditioner. */
     Vector inverse_uu, inverse_uv, inverse_vv;
+    /** The direct solver of S_V, or null. */
+    LinearSolver *schur_solver = nullptr;
+    /** S_V, the V of the iterate and the coefficients of B. */
+    dealii::TrilinosWrappers::SparseMatrix schur;
+    Vector                                 schur_v;
+    double                                 schur_beta    = 0;
+    double                                 schur_penalty = 0;
   };
 
   /**
@@ -202,6 +239,8 @@ namespace PhaseField
     NestedScheme<dim> nested;
     /** The penalty the next step starts with. */
     double next_penalty;
+    /** The solver of the Schur preconditioner (direct type only). */
+    std::unique_ptr<LinearSolver> schur_solver;
   };
 } // namespace PhaseField
 

@@ -78,6 +78,12 @@ namespace PhaseField
     unsigned int iterations    = 0;
     unsigned int cg_iterations = 0;
     double       gradient_norm = 0;
+    /**
+     * Stopped (converged) at round-off: the last accepted step changed
+     * neither the value nor the model measurably and the gradient norm
+     * fell by less than TrustRegion::stagnation.
+     */
+    bool at_roundoff = false;
     /** The radius at the end (to start the next minimisation with). */
     double radius = 0;
   };
@@ -119,7 +125,8 @@ namespace PhaseField
    * TrustRegion::grow_ratio and the step reached the boundary. When both
    * decreases are below round-off of the value, rho = 1. The CG tolerance
    * is min(TrustRegion::cg_forcing, sqrt(|g|)) |g| (superlinear
-   * convergence). Not converged: max_iterations reached, a non-finite
+   * convergence). Converged: the gradient tolerance is met, or round-off
+   * is reached (TrustRegionReport::at_roundoff). Not converged: max_iterations reached, a non-finite
    * value at every trial, or the radius below TrustRegion::min_radius
    * times the initial one.
    */
@@ -145,6 +152,8 @@ namespace PhaseField
     constexpr double max_radius_factor = 1e8;
     /** Smallest radius relative to the initial one before giving up. */
     constexpr double min_radius = 1e-12;
+    /** See TrustRegionReport::at_roundoff. */
+    constexpr double stagnation = 0.5;
     /** Largest relative CG tolerance. */
     constexpr double cg_forcing = 0.1;
   } // namespace TrustRegion
