@@ -40,13 +40,14 @@ subsection Output
 end
 )",
                                           header);
-  Testing::print_columns(rows,
-                         header,
-                         {"step", "willmore_energy", "area_energy",
-                          "inside_measure", "l2_error"});
+  Testing::print_columns(
+    rows,
+    header,
+    {"step", "willmore_energy", "area_energy", "inside_measure", "l2_error"});
   bool counted = true;
   for (unsigned int i = 1; i < rows.size(); ++i)
-    counted = counted && rows[i][Testing::column(header, "al_iterations")] > 0 &&
+    counted = counted &&
+              rows[i][Testing::column(header, "al_iterations")] > 0 &&
               rows[i][Testing::column(header, "tr_iterations")] > 0;
   Testing::log() << "al_iterations and tr_iterations > 0 in every step: "
                  << (counted ? "yes" : "NO") << std::endl;

@@ -44,7 +44,7 @@ template <int dim>
 void
 check(const bool double_well, const bool scaled, const double penalty)
 {
-  const MPI_Comm                       comm = MPI_COMM_WORLD;
+  const MPI_Comm comm = MPI_COMM_WORLD;
   (void)comm;
   const Testing::AdaptiveTestMesh<dim> mesh;
   const LumpedOperators<dim>          &ops = mesh.operators;
@@ -53,10 +53,10 @@ check(const bool double_well, const bool scaled, const double penalty)
   // a smooth state and direction: the profile of the test sphere plus
   // cosine waves
   Functions::CosineFunction<dim> wave;
-  TVector                         w(ops.locally_owned_dofs, comm);
+  TVector                        w(ops.locally_owned_dofs, comm);
   VectorTools::interpolate(mesh.dof_handler, wave, w);
   const Shapes::PhaseFieldProfile<dim> profile(mesh.sphere, mesh.eps);
-  TVector                               u0(w), forcing(w), p(w);
+  TVector                              u0(w), forcing(w), p(w);
   VectorTools::interpolate(mesh.dof_handler, profile, u0);
 
   NestedCoefficients coeff;
@@ -75,8 +75,8 @@ check(const bool double_well, const bool scaled, const double penalty)
   AugmentedLagrangianStep<dim> step(mesh.discretization, coeff, old_u, scaled);
 
   TBlockVector x = step.make_point(), d = step.make_point();
-  x.block(0)    = u0;
-  x.block(1)    = u0;
+  x.block(0) = u0;
+  x.block(1) = u0;
   x.block(1).add(0.02, w);
   p = w;
   p *= 0.3;
@@ -97,7 +97,7 @@ check(const bool double_well, const bool scaled, const double penalty)
 
   AugmentedLagrangianObjective objective(step, p, penalty);
   const double                 fd_step = 1e-6;
-  TBlockVector                  xp(x), xm(x), g(x), gp(x), gm(x), hd(x);
+  TBlockVector                 xp(x), xm(x), g(x), gp(x), gm(x), hd(x);
   xp.add(fd_step, d);
   xm.add(-fd_step, d);
   mesh.discretization.distribute_constraints(xp);
@@ -116,12 +116,11 @@ check(const bool double_well, const bool scaled, const double penalty)
   objective.gradient(x, g);
   objective.hessian_vmult(d, hd);
   gp -= hd;
-  report("|H d - FD| / |H d|",
-         step.gradient_norm(gp) / step.gradient_norm(hd));
+  report("|H d - FD| / |H d|", step.gradient_norm(gp) / step.gradient_norm(hd));
 
   // Steihaug-Toint: decrease of the model, inside the B-norm radius
   const double      radius = 1e-3;
-  TBlockVector       s(x);
+  TBlockVector      s(x);
   TruncatedCGResult cg = truncated_cg(objective, g, radius, 1e-12, 500, s);
   objective.hessian_vmult(s, hd);
   const double model = g * s + 0.5 * (s * hd);

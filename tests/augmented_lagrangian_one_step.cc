@@ -77,8 +77,11 @@ main(int argc, char **argv)
   TBlockVector              old_state;
   for (const Scheme scheme : {Scheme::nested, Scheme::augmented_lagrangian})
     {
-      const ConditionalOStream quiet(std::cout, std::getenv("AL_VERBOSE") != nullptr && Utilities::MPI::this_mpi_process(comm) == 0);
-      auto s = create_time_stepping_scheme<2>(settings(scheme, h),
+      const ConditionalOStream quiet(std::cout,
+                                     std::getenv("AL_VERBOSE") != nullptr &&
+                                       Utilities::MPI::this_mpi_process(comm) ==
+                                         0);
+      auto         s = create_time_stepping_scheme<2>(settings(scheme, h),
                                               discretization,
                                               quiet);
       TBlockVector state;
@@ -103,9 +106,9 @@ main(int argc, char **argv)
   const auto relative = [&](const unsigned int field, const TBlockVector &a) {
     TVector difference(a.block(field));
     difference -= results[0].block(field);
-    return std::sqrt(ops.mass_product(difference, difference) /
-                     ops.mass_product(results[0].block(field),
-                                      results[0].block(field)));
+    return std::sqrt(
+      ops.mass_product(difference, difference) /
+      ops.mass_product(results[0].block(field), results[0].block(field)));
   };
   for (const unsigned int field : {Field::U, Field::V})
     {

@@ -45,9 +45,9 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto nested = run("nested");
-  const auto al     = run("augmented lagrangian");
-  bool       ok     = true;
+  const auto                               nested = run("nested");
+  const auto                               al     = run("augmented lagrangian");
+  bool                                     ok     = true;
   for (unsigned int i = 0; i < al.size(); ++i)
     {
       const double l2 = std::abs(al[i].l2_error / nested[i].l2_error - 1);

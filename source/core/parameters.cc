@@ -324,12 +324,12 @@ namespace PhaseField
   AugmentedLagrangianParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Augmented Lagrangian");
-    gradient_tolerance          = prm.get_double("Gradient tolerance");
-    constraint_tolerance        = prm.get_double("Constraint tolerance");
-    initial_penalty             = prm.get_double("Initial penalty");
-    initial_multiplier          = prm.get_double("Initial multiplier");
-    scaled                      = prm.get_bool("Scaled");
-    max_outer_iterations        = prm.get_integer("Maximum outer iterations");
+    gradient_tolerance   = prm.get_double("Gradient tolerance");
+    constraint_tolerance = prm.get_double("Constraint tolerance");
+    initial_penalty      = prm.get_double("Initial penalty");
+    initial_multiplier   = prm.get_double("Initial multiplier");
+    scaled               = prm.get_bool("Scaled");
+    max_outer_iterations = prm.get_integer("Maximum outer iterations");
     max_trust_region_iterations =
       prm.get_integer("Maximum trust-region iterations");
     max_cg_iterations = prm.get_integer("Maximum CG iterations");

@@ -403,8 +403,7 @@ namespace PhaseField
         old_solution = solution;
         report       = scheme->advance(old_solution, solution, step_sizes.tau);
         AssertThrow(report.converged,
-                    ExcMessage("Biharmonic time step " +
-                               std::to_string(step) +
+                    ExcMessage("Biharmonic time step " + std::to_string(step) +
                                " did not converge (nested: the linear solve "
                                "did not reach round-off; augmented "
                                "Lagrangian: raise the limits of subsection "
@@ -478,10 +477,11 @@ namespace PhaseField
               << " DoFs per field, " << r.n_factorizations
               << " factorisation(s), " << r.al_iterations << " AL / "
               << r.tr_iterations << " trust-region / " << r.linear_iterations
-              << " Krylov iterations, relative residual " << std::setprecision(2)
-              << r.relative_residual << std::setprecision(6) << "; L2 error "
-              << r.l2_error << ", H1 error " << r.h1_error << " ["
-              << std::setprecision(3) << r.wall_seconds << " s:";
+              << " Krylov iterations, relative residual "
+              << std::setprecision(2) << r.relative_residual
+              << std::setprecision(6) << "; L2 error " << r.l2_error
+              << ", H1 error " << r.h1_error << " [" << std::setprecision(3)
+              << r.wall_seconds << " s:";
         for (const auto &section : r.section_seconds)
           pcout << ' ' << section.first << ' ' << section.second << " s,";
         pcout << "]" << std::setprecision(6) << std::endl;

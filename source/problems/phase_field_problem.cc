@@ -52,14 +52,14 @@ namespace PhaseField
   PhaseFieldProblem<dim>::run()
   {
     SchemeSettings settings;
-    settings.scheme        = prm.model.scheme;
-    settings.epsilon       = prm.model.epsilon;
-    settings.inner_tau     = prm.model.inner_tau;
-    settings.outer_energy  = setup.outer_energy;
-    settings.newton        = prm.newton;
-    settings.linear_solver = prm.linear_solver;
+    settings.scheme               = prm.model.scheme;
+    settings.epsilon              = prm.model.epsilon;
+    settings.inner_tau            = prm.model.inner_tau;
+    settings.outer_energy         = setup.outer_energy;
+    settings.newton               = prm.newton;
+    settings.linear_solver        = prm.linear_solver;
     settings.augmented_lagrangian = prm.augmented_lagrangian;
-    settings.verbose       = prm.output.verbose;
+    settings.verbose              = prm.output.verbose;
     scheme = create_time_stepping_scheme<dim>(settings, discretization, pcout);
     TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(prm),
                             discretization,

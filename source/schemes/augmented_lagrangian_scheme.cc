@@ -66,11 +66,11 @@ namespace PhaseField
   AugmentedLagrangianStep<dim>::objective_gradient(const BlockVector &x,
                                                    BlockVector       &g) const
   {
-    const double      *m  = ops.lumped_mass.begin();
-    const double      *u  = x.block(x_u).begin();
-    const double      *v  = x.block(x_v).begin();
-    const double      *uk = old_u.begin();
-    const double      *f =
+    const double *m  = ops.lumped_mass.begin();
+    const double *u  = x.block(x_u).begin();
+    const double *v  = x.block(x_v).begin();
+    const double *uk = old_u.begin();
+    const double *f =
       coeff.outer.forcing ? coeff.outer.forcing->begin() : nullptr;
     const double       forcing_factor = coeff.tau / coeff.epsilon;
     const unsigned int n              = x.block(x_u).locally_owned_size();
@@ -101,7 +101,8 @@ namespace PhaseField
     const unsigned int n  = d.block(x_u).locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
-        y.block(x_u).begin()[i] = f_scale * m[i] * ((1 + a) * du[i] - a * dv[i]);
+        y.block(x_u).begin()[i] =
+          f_scale * m[i] * ((1 + a) * du[i] - a * dv[i]);
         y.block(x_v).begin()[i] = f_scale * m[i] * a * (dv[i] - du[i]);
       }
   }
@@ -154,10 +155,9 @@ namespace PhaseField
 
   template <int dim>
   void
-  AugmentedLagrangianStep<dim>::constraint_jacobian_tvmult(
-    const BlockVector &x,
-    const Vector      &y,
-    BlockVector       &g) const
+  AugmentedLagrangianStep<dim>::constraint_jacobian_tvmult(const BlockVector &x,
+                                                           const Vector      &y,
+                                                           BlockVector &g) const
   {
     // c'^T y = (-M y, K(V) y)
     k_vmult(x.block(x_v), y, g.block(x_v));
@@ -177,9 +177,9 @@ namespace PhaseField
                                                          BlockVector &out) const
   {
     // (0, c M[Psi'''(V) y] d_V)
-    out.block(x_u)     = 0;
-    const double *m    = ops.lumped_mass.begin();
-    const double *v    = x.block(x_v).begin();
+    out.block(x_u)       = 0;
+    const double      *m = ops.lumped_mass.begin();
+    const double      *v = x.block(x_v).begin();
     const unsigned int n = y.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       out.block(x_v).begin()[i] =
@@ -213,7 +213,7 @@ namespace PhaseField
   void
   AugmentedLagrangianStep<dim>::setup_preconditioner(const BlockVector &x,
                                                      const Vector      &y,
-                                                     const double penalty)
+                                                     const double       penalty)
   {
     if (schur_solver != nullptr)
       setup_schur(x, penalty);
@@ -228,13 +228,13 @@ namespace PhaseField
   AugmentedLagrangianStep<dim>::setup_schur(const BlockVector &x,
                                             const double       penalty)
   {
-    const double s     = f_scale;
-    const double a     = weights.a;
-    const double beta  = s * (1 + a) + penalty;
-    schur_beta         = beta;
-    schur_penalty      = penalty;
-    schur_v            = x.block(x_v);
-    const Vector &v    = x.block(x_v);
+    const double s    = f_scale;
+    const double a    = weights.a;
+    const double beta = s * (1 + a) + penalty;
+    schur_beta        = beta;
+    schur_penalty     = penalty;
+    schur_v           = x.block(x_v);
+    const Vector &v   = x.block(x_v);
     Vector        k_hat_weight(v);
     for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
       k_hat_weight.begin()[i] = weights.k(v.begin()[i], a / (1 + a));
@@ -272,29 +272,29 @@ namespace PhaseField
       {
         if (!(m[i] > 0))
           continue; // constrained: the block stays zero
-        const types::global_dof_index row = ops.locally_owned_dofs.nth_index_in_set(i);
+        const types::global_dof_index row =
+          ops.locally_owned_dofs.nth_index_in_set(i);
         const double k_mass = m[i] * weights.k(v[i]);
         // K_ii and sum_j K_ij^2 / m_i
         double k_ii = k_mass, k_squares = 0;
         for (auto entry = L.begin(row); entry != L.end(row); ++entry)
           {
             const bool   diagonal = entry->column() == row;
-            const double k_ij =
-              tt * entry->value() + (diagonal ? k_mass : 0.);
+            const double k_ij = tt * entry->value() + (diagonal ? k_mass : 0.);
             if (diagonal)
               k_ii = k_ij;
             k_squares += k_ij * k_ij;
           }
-        const double uu = m[i] * (f_scale * (1 + a) + penalty);
-        double       uv = -m[i] * f_scale * a - penalty * k_ii;
+        const double uu      = m[i] * (f_scale * (1 + a) + penalty);
+        double       uv      = -m[i] * f_scale * a - penalty * k_ii;
         const double vv_base = m[i] * f_scale * a + penalty * k_squares / m[i];
-        double vv = vv_base + m[i] * weights.e(v[i], y.begin()[i]);
-        const auto determinant = [&]() { return uu * vv - uv * uv; };
+        double       vv      = vv_base + m[i] * weights.e(v[i], y.begin()[i]);
+        const auto   determinant = [&]() { return uu * vv - uv * uv; };
         if (!(vv > 0) || determinant() <= min_relative_determinant * uu * vv)
           vv = vv_base;
         if (determinant() <= min_relative_determinant * uu * vv)
           uv = 0;
-        const double det            = determinant();
+        const double det      = determinant();
         inverse_uu.begin()[i] = vv / det;
         inverse_uv.begin()[i] = -uv / det;
         inverse_vv.begin()[i] = uu / det;
@@ -312,7 +312,7 @@ namespace PhaseField
       {
         // B z = r: w = (beta M)^-1 r_U, S_V z_V = r_V + (s a M + lambda K) w,
         // z_U = (beta M)^-1 (r_U + (s a M + lambda K) z_V)
-        const double s_a = f_scale * weights.a;
+        const double s_a      = f_scale * weights.a;
         const auto   coupling = [&](const Vector &in, Vector &out) {
           k_vmult(schur_v, in, out);
           out *= schur_penalty;
@@ -482,7 +482,7 @@ namespace PhaseField
     BlockVector x = step.make_point();
     x.block(0)    = state.block(Field::U);
     x.block(1)    = state.block(Field::V);
-    Vector p(state.block(Field::P));
+    Vector                          p(state.block(Field::P));
     const AugmentedLagrangianReport al = augmented_lagrangian_minimize(
       step, x, p, control(), pcout, settings.verbose);
     state.block(Field::U) = x.block(0);
@@ -490,11 +490,11 @@ namespace PhaseField
     state.block(Field::P) = p;
 
     StepReport report;
-    report.converged           = al.converged;
-    report.newton_iterations   = al.tr_iterations;
-    report.linear_iterations   = al.cg_iterations;
-    report.al_iterations       = al.outer_iterations;
-    report.tr_iterations       = al.tr_iterations;
+    report.converged         = al.converged;
+    report.newton_iterations = al.tr_iterations;
+    report.linear_iterations = al.cg_iterations;
+    report.al_iterations     = al.outer_iterations;
+    report.tr_iterations     = al.tr_iterations;
     report.initial_residual_norm =
       std::max(al.initial_gradient_norm, al.initial_constraint_norm);
     report.final_residual_norm = std::max(al.gradient_norm, al.constraint_norm);

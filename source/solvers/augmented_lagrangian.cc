@@ -95,7 +95,8 @@ namespace PhaseField
 
   namespace
   {
-    /** ||C||_L2 = sqrt(c.M^-1 c) of the constraint at @p x; M^-1 c in @p m_inverse_c. */
+    /** ||C||_L2 = sqrt(c.M^-1 c) of the constraint at @p x; M^-1 c in @p
+     * m_inverse_c. */
     double
     constraint_norm(const ConstrainedMinimizationProblem &problem,
                     const BlockVector                    &x,
@@ -120,27 +121,25 @@ namespace PhaseField
   {
     namespace AL = AugmentedLagrangian;
     AugmentedLagrangianReport report;
-    double             lambda = control.initial_penalty;
-    double             w      = 1 / lambda;
-    double             eta    = std::pow(lambda, -AL::eta_exponent);
-    TrustRegionControl inner  = control.trust_region;
-    Vector             m_inverse_c(p);
+    double                    lambda = control.initial_penalty;
+    double                    w      = 1 / lambda;
+    double                    eta    = std::pow(lambda, -AL::eta_exponent);
+    TrustRegionControl        inner  = control.trust_region;
+    Vector                    m_inverse_c(p);
     {
       AugmentedLagrangianObjective objective(problem, p, lambda);
       BlockVector                  g(x);
       objective.distribute_constraints(x);
       objective.gradient(x, g);
-      report.initial_gradient_norm = problem.gradient_norm(g);
-      report.initial_constraint_norm =
-        constraint_norm(problem, x, m_inverse_c);
+      report.initial_gradient_norm   = problem.gradient_norm(g);
+      report.initial_constraint_norm = constraint_norm(problem, x, m_inverse_c);
     }
     while (report.outer_iterations < control.max_outer_iterations)
       {
         ++report.outer_iterations;
         inner.gradient_tolerance = std::max(w, control.gradient_tolerance);
         AugmentedLagrangianObjective objective(problem, p, lambda);
-        const TrustRegionReport      tr =
-          trust_region_minimize(objective, x, inner);
+        const TrustRegionReport tr = trust_region_minimize(objective, x, inner);
         report.tr_iterations += tr.iterations;
         report.cg_iterations += tr.cg_iterations;
         report.gradient_norm   = tr.gradient_norm;

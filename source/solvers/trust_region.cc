@@ -110,8 +110,8 @@ namespace PhaseField
 
 
   TrustRegionReport
-  trust_region_minimize(TrustRegionObjective &objective,
-                        BlockVector          &x,
+  trust_region_minimize(TrustRegionObjective     &objective,
+                        BlockVector              &x,
                         const TrustRegionControl &control)
   {
     TrustRegionReport report;

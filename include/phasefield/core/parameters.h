@@ -307,15 +307,15 @@ namespace PhaseField
     /** Memory estimate per cell of a run (matrices, vectors, mesh). */
     static constexpr double bytes_per_cell = 1024.;
 
-    unsigned int           dimension;
-    std::string            output_directory;
-    GeometryParameters     geometry;
-    MeshParameters         mesh;
-    ModelParameters        model;
-    NewtonParameters       newton;
-    LinearSolverParameters linear_solver;
-    OutputParameters       output;
-    CheckpointParameters   checkpoint;
+    unsigned int                  dimension;
+    std::string                   output_directory;
+    GeometryParameters            geometry;
+    MeshParameters                mesh;
+    ModelParameters               model;
+    NewtonParameters              newton;
+    LinearSolverParameters        linear_solver;
+    OutputParameters              output;
+    CheckpointParameters          checkpoint;
     AugmentedLagrangianParameters augmented_lagrangian;
 
     /** @p extra_shapes, @p extra_documentation: see GeometryParameters. */

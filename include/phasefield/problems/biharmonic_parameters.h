@@ -94,11 +94,11 @@ namespace PhaseField
   /** All parameters of biharmonic_flow. */
   struct BiharmonicParameters
   {
-    unsigned int                dimension;
-    std::string                 output_directory;
-    BiharmonicProblemParameters problem;
-    ConvergenceParameters       convergence;
-    BiharmonicTimeParameters    time;
+    unsigned int                  dimension;
+    std::string                   output_directory;
+    BiharmonicProblemParameters   problem;
+    ConvergenceParameters         convergence;
+    BiharmonicTimeParameters      time;
     AugmentedLagrangianParameters augmented_lagrangian;
 
     static void

@@ -128,7 +128,7 @@ namespace PhaseField
    * region failed or max_outer_iterations were used.
    */
   AugmentedLagrangianReport
-  augmented_lagrangian_minimize(ConstrainedMinimizationProblem   &problem,
+  augmented_lagrangian_minimize(ConstrainedMinimizationProblem &problem,
                                 dealii::TrilinosWrappers::MPI::BlockVector &x,
                                 dealii::TrilinosWrappers::MPI::Vector      &p,
                                 const AugmentedLagrangianControl &control,

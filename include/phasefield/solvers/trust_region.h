@@ -59,8 +59,8 @@ namespace PhaseField
   struct TrustRegionControl
   {
     /** Stop when gradient_norm(g) <= this. */
-    double gradient_tolerance = 1e-8;
-    unsigned int max_iterations = 200;
+    double       gradient_tolerance = 1e-8;
+    unsigned int max_iterations     = 200;
     /** Truncated-CG iterations per trust-region step. */
     unsigned int max_cg_iterations = 2000;
     /**
@@ -126,9 +126,9 @@ namespace PhaseField
    * decreases are below round-off of the value, rho = 1. The CG tolerance
    * is min(TrustRegion::cg_forcing, sqrt(|g|)) |g| (superlinear
    * convergence). Converged: the gradient tolerance is met, or round-off
-   * is reached (TrustRegionReport::at_roundoff). Not converged: max_iterations reached, a non-finite
-   * value at every trial, or the radius below TrustRegion::min_radius
-   * times the initial one.
+   * is reached (TrustRegionReport::at_roundoff). Not converged: max_iterations
+   * reached, a non-finite value at every trial, or the radius below
+   * TrustRegion::min_radius times the initial one.
    */
   TrustRegionReport
   trust_region_minimize(TrustRegionObjective                       &objective,
