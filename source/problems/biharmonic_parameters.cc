@@ -137,6 +137,15 @@ namespace PhaseField
   BiharmonicTimeParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
+    prm.declare_entry("Scheme",
+                      "nested",
+                      Patterns::Selection("nested|augmented lagrangian"),
+                      "nested: Newton on the (U,V,P) system of the nested "
+                      "scheme (one factorisation per mesh). augmented "
+                      "lagrangian: each step as the minimisation of an "
+                      "augmented Lagrangian by a trust-region method "
+                      "(thesis section 7.1; subsection Augmented "
+                      "Lagrangian).");
     prm.declare_entry("Tau",
                       "h^2",
                       Patterns::Anything(),
@@ -162,6 +171,7 @@ namespace PhaseField
   BiharmonicTimeParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
+    scheme               = parse_scheme(prm.get("Scheme"));
     tau_expression       = prm.get("Tau");
     inner_tau_expression = prm.get("Inner tau");
     final_time           = prm.get_double("Final time");
@@ -181,6 +191,7 @@ namespace PhaseField
     BiharmonicProblemParameters::declare_parameters(prm);
     ConvergenceParameters::declare_parameters(prm);
     BiharmonicTimeParameters::declare_parameters(prm);
+    AugmentedLagrangianParameters::declare_parameters(prm);
   }
 
 
@@ -193,6 +204,7 @@ namespace PhaseField
     problem.parse_parameters(prm);
     convergence.parse_parameters(prm);
     time.parse_parameters(prm);
+    augmented_lagrangian.parse_parameters(prm);
     // Validate the step sizes of every level before any computation.
     for (const unsigned int level : convergence.levels)
       time.step_sizes(std::ldexp(1.0, -static_cast<int>(level)));

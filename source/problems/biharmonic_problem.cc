@@ -265,11 +265,13 @@ namespace PhaseField
 
     /** The nested scheme of the biharmonic model with forcing @p f. */
     SchemeSettings
-    biharmonic_scheme(const double                         inner_tau,
+    biharmonic_scheme(const BiharmonicParameters          &parameters,
+                      const double                         inner_tau,
                       const TrilinosWrappers::MPI::Vector *f)
     {
       SchemeSettings s;
-      s.scheme                           = Scheme::nested;
+      s.scheme                           = parameters.time.scheme;
+      s.augmented_lagrangian             = parameters.augmented_lagrangian;
       s.epsilon                          = 1;
       s.inner_tau                        = inner_tau;
       s.double_well                      = false;
@@ -321,7 +323,8 @@ namespace PhaseField
     discretization.create_mesh(nullptr, 1.);
     const LumpedOperators<dim> &operators = discretization.get_operators();
     scheme                                = create_time_stepping_scheme<dim>(
-      biharmonic_scheme(step_sizes.inner_tau,
+      biharmonic_scheme(prm,
+                        step_sizes.inner_tau,
                         exact.forced ? &forcing_vector : nullptr),
       discretization,
       pcout);
@@ -382,14 +385,15 @@ namespace PhaseField
     Timer wall_timer;
     setup_system();
 
-    // U^0 = I_h u(0); V and P start at zero (the scheme is linear, so
-    // every step is solved exactly from any starting point).
+    // U^0 = I_h u(0); V and P as the scheme initialises them (nested:
+    // Algorithm 3.1; augmented Lagrangian: P = Initial multiplier).
     exact_solution->set_time(0);
     discretization.interpolate(*exact_solution, solution.block(0));
     discretization.get_operators().zero_constrained(solution.block(0));
+    scheme->initialize(solution, step_sizes.tau);
 
     double     time = 0;
-    StepReport report;
+    StepReport report, total_report;
     for (unsigned int step = 1; step <= step_sizes.n_steps; ++step)
       {
         TimerOutput::Scope t(computing_timer, "time steps");
@@ -399,9 +403,14 @@ namespace PhaseField
         old_solution = solution;
         report       = scheme->advance(old_solution, solution, step_sizes.tau);
         AssertThrow(report.converged,
-                    ExcMessage("The linear solve of a biharmonic time step "
-                               "did not reach round-off (step " +
-                               std::to_string(step) + ")."));
+                    ExcMessage("Biharmonic time step " + std::to_string(step) +
+                               " did not converge (nested: the linear solve "
+                               "did not reach round-off; augmented "
+                               "Lagrangian: raise the limits of subsection "
+                               "Augmented Lagrangian)."));
+        total_report.al_iterations += report.al_iterations;
+        total_report.tr_iterations += report.tr_iterations;
+        total_report.linear_iterations += report.linear_iterations;
       }
 
     BiharmonicLevelResult result;
@@ -414,7 +423,10 @@ namespace PhaseField
     result.n_dofs    = discretization.n_dofs();
     result.relative_residual =
       report.final_residual_norm / report.initial_residual_norm;
-    result.n_factorizations = scheme->n_factorizations();
+    result.n_factorizations  = scheme->n_factorizations();
+    result.al_iterations     = total_report.al_iterations;
+    result.tr_iterations     = total_report.tr_iterations;
+    result.linear_iterations = total_report.linear_iterations;
     compute_errors(time, result);
     result.wall_seconds = wall_timer.wall_time();
     result.section_seconds =
@@ -463,10 +475,13 @@ namespace PhaseField
               << ", inner tau = " << r.inner_tau << ", " << r.n_steps
               << " steps to t = " << r.time << ", " << r.n_dofs
               << " DoFs per field, " << r.n_factorizations
-              << " factorisation(s), relative residual " << std::setprecision(2)
-              << r.relative_residual << std::setprecision(6) << "; L2 error "
-              << r.l2_error << ", H1 error " << r.h1_error << " ["
-              << std::setprecision(3) << r.wall_seconds << " s:";
+              << " factorisation(s), " << r.al_iterations << " AL / "
+              << r.tr_iterations << " trust-region / " << r.linear_iterations
+              << " Krylov iterations, relative residual "
+              << std::setprecision(2) << r.relative_residual
+              << std::setprecision(6) << "; L2 error " << r.l2_error
+              << ", H1 error " << r.h1_error << " [" << std::setprecision(3)
+              << r.wall_seconds << " s:";
         for (const auto &section : r.section_seconds)
           pcout << ' ' << section.first << ' ' << section.second << " s,";
         pcout << "]" << std::setprecision(6) << std::endl;

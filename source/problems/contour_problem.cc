@@ -26,13 +26,15 @@ namespace PhaseField
       return setup;
     }
 
-    /** The sum of the Newton and linear iterations of two sub-steps. */
+    /** The sum of the iteration counts of two sub-steps. */
     StepReport
     combine(const StepReport &first, const StepReport &second)
     {
       StepReport sum = second;
       sum.newton_iterations += first.newton_iterations;
       sum.linear_iterations += first.linear_iterations;
+      sum.al_iterations += first.al_iterations;
+      sum.tr_iterations += first.tr_iterations;
       sum.initial_residual_norm = first.initial_residual_norm;
       return sum;
     }

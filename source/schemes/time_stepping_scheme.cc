@@ -1,3 +1,4 @@
+#include <phasefield/schemes/augmented_lagrangian_scheme.h>
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/schemes/semi_implicit_scheme.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
@@ -25,6 +26,13 @@ namespace PhaseField
           return std::make_unique<SemiImplicitScheme<dim>>(settings,
                                                            discretization,
                                                            pcout);
+        case Scheme::augmented_lagrangian:
+          if (settings.outer_energy.has_restoration_terms())
+            throw InputError(
+              "<Time stepping / Scheme> = augmented lagrangian has no area "
+              "term or fixed values: use Scheme = nested.");
+          return std::make_unique<AugmentedLagrangianScheme<dim>>(
+            settings, discretization, pcout);
       }
     throw InputError("Unknown <Time stepping / Scheme>.");
   }

@@ -97,7 +97,9 @@ namespace PhaseField
                                      "l2_error",
                                      "wall_seconds",
                                      "tau",
-                                     "residual_norm"},
+                                     "residual_norm",
+                                     "al_iterations",
+                                     "tr_iterations"},
                                     client.extra_columns());
   }
 
@@ -362,7 +364,9 @@ namespace PhaseField
                                              error,
                                              wall_timer.wall_time(),
                                              tau,
-                                             report.final_residual_norm},
+                                             report.final_residual_norm,
+                                             double(report.al_iterations),
+                                             double(report.tr_iterations)},
                                             client.extra_values(state, e)));
     pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
           << std::setprecision(5) << time << "  newton "

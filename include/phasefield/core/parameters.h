@@ -149,7 +149,54 @@ namespace PhaseField
     /** Nested variational time discretization (thesis chapter 3). */
     nested,
     /** Du-Liu-Wang semi-implicit scheme (thesis section 5.2). */
-    semi_implicit
+    semi_implicit,
+    /**
+     * The nested step as a minimisation of an augmented Lagrangian in
+     * (U, V) with a trust-region inner solver (thesis chapter 7).
+     */
+    augmented_lagrangian
+  };
+
+  /** The name of @p scheme in `Time stepping / Scheme`. */
+  std::string
+  scheme_name(const Scheme scheme);
+
+  /** The scheme named @p name (one of the names of scheme_selection()). */
+  Scheme
+  parse_scheme(const std::string &name);
+
+  /** The pattern of `Time stepping / Scheme`: "nested|semi-implicit|...". */
+  std::string
+  scheme_selection();
+
+  /**
+   * Subsection `Augmented Lagrangian` (thesis Algorithm 2.1, chapter 7):
+   * the tolerances of the outer loop, its start values and the limits of
+   * the trust-region inner solver.
+   */
+  struct AugmentedLagrangianParameters
+  {
+    /** w*: ||grad l_A||_L2 at which the outer loop may stop. */
+    double gradient_tolerance = 1e-8;
+    /** eta*: ||C||_L2 at which the outer loop may stop. */
+    double constraint_tolerance = 1e-8;
+    /** lambda0: the penalty of the first step (later steps: see scheme). */
+    double initial_penalty = 10;
+    /** P0: the multiplier at every node at the start of the run. */
+    double initial_multiplier = 0.1;
+    /** true: the outer energy divided by epsilon (thesis (7.9)). */
+    bool scaled = true;
+    /** Limit of the outer (multiplier / penalty) iterations per step. */
+    unsigned int max_outer_iterations = 30;
+    /** Limit of the trust-region iterations per inner minimisation. */
+    unsigned int max_trust_region_iterations = 200;
+    /** Limit of the truncated-CG iterations per trust-region step. */
+    unsigned int max_cg_iterations = 2000;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 
   /**
@@ -296,15 +343,16 @@ namespace PhaseField
     /** Memory estimate per cell of a run (matrices, vectors, mesh). */
     static constexpr double bytes_per_cell = 1024.;
 
-    unsigned int           dimension;
-    std::string            output_directory;
-    GeometryParameters     geometry;
-    MeshParameters         mesh;
-    ModelParameters        model;
-    NewtonParameters       newton;
-    LinearSolverParameters linear_solver;
-    OutputParameters       output;
-    CheckpointParameters   checkpoint;
+    unsigned int                  dimension;
+    std::string                   output_directory;
+    GeometryParameters            geometry;
+    MeshParameters                mesh;
+    ModelParameters               model;
+    NewtonParameters              newton;
+    LinearSolverParameters        linear_solver;
+    OutputParameters              output;
+    CheckpointParameters          checkpoint;
+    AugmentedLagrangianParameters augmented_lagrangian;
 
     /**
      * @p extra_shapes, @p extra_documentation: see GeometryParameters.

@@ -2,6 +2,7 @@
 #define phasefield_biharmonic_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <phasefield/core/parameters.h>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,8 @@ namespace PhaseField
    */
   struct BiharmonicTimeParameters
   {
+    /** nested or augmented_lagrangian. */
+    Scheme      scheme = Scheme::nested;
     std::string tau_expression;
     std::string inner_tau_expression;
     double      final_time;
@@ -91,11 +94,12 @@ namespace PhaseField
   /** All parameters of biharmonic_flow. */
   struct BiharmonicParameters
   {
-    unsigned int                dimension;
-    std::string                 output_directory;
-    BiharmonicProblemParameters problem;
-    ConvergenceParameters       convergence;
-    BiharmonicTimeParameters    time;
+    unsigned int                  dimension;
+    std::string                   output_directory;
+    BiharmonicProblemParameters   problem;
+    ConvergenceParameters         convergence;
+    BiharmonicTimeParameters      time;
+    AugmentedLagrangianParameters augmented_lagrangian;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

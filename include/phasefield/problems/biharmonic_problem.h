@@ -78,6 +78,14 @@ namespace PhaseField
     double relative_residual;
     /** LU factorisations of the time-step matrix on this level (1). */
     unsigned int n_factorizations;
+    /**
+     * Totals over the steps: outer and trust-region iterations of the
+     * augmented Lagrangian scheme (0 for the nested one) and Krylov
+     * iterations.
+     */
+    unsigned int al_iterations     = 0;
+    unsigned int tr_iterations     = 0;
+    unsigned int linear_iterations = 0;
     double       wall_seconds;
     /** Wall time of each section of the computation (TimerOutput). */
     std::map<std::string, double> section_seconds;

@@ -284,6 +284,13 @@ namespace PhaseField
      */
     static constexpr double inner_tolerance = Constants::roundoff;
 
+    /**
+     * r = R_P(U, V) = M(V-U) + c M Psi'(V) + ttau L V: the inner equation,
+     * M times the constraint C(U, V) of the augmented Lagrangian scheme.
+     */
+    void
+    inner_residual(const Vector &u, const Vector &v, Vector &r) const;
+
   private:
     class InnerProblem;
 
@@ -329,9 +336,6 @@ namespace PhaseField
     bool
     u_is_fixed(const unsigned int i) const;
 
-    /** r = R_P(U, V) = M(V-U) + c M Psi'(V) + ttau L V. */
-    void
-    inner_residual(const Vector &u, const Vector &v, Vector &r) const;
 
     /** The nodal weights k_weight(V, shift) of K(V) - shift M. */
     Vector

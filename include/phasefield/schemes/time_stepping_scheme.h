@@ -170,7 +170,9 @@ namespace PhaseField
     OuterEnergy            outer_energy;
     NewtonParameters       newton;
     LinearSolverParameters linear_solver;
-    bool                   verbose = false;
+    /** Only for Scheme::augmented_lagrangian. */
+    AugmentedLagrangianParameters augmented_lagrangian;
+    bool                          verbose = false;
   };
 
   /**

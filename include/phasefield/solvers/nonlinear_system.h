@@ -18,9 +18,13 @@ namespace PhaseField
   /** What one solve of a nonlinear system did. */
   struct StepReport
   {
-    bool         converged             = false;
-    unsigned int newton_iterations     = 0;
-    unsigned int linear_iterations     = 0;
+    bool         converged         = false;
+    unsigned int newton_iterations = 0;
+    unsigned int linear_iterations = 0;
+    /** Outer iterations of the augmented Lagrangian scheme (else 0). */
+    unsigned int al_iterations = 0;
+    /** Trust-region iterations of the augmented Lagrangian scheme. */
+    unsigned int tr_iterations         = 0;
     double       initial_residual_norm = 0;
     double       final_residual_norm   = 0;
   };

@@ -1,0 +1,247 @@
+#ifndef phasefield_schemes_augmented_lagrangian_scheme_h
+#define phasefield_schemes_augmented_lagrangian_scheme_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/parameters.h>
+#include <phasefield/mesh/discretization.h>
+#include <phasefield/schemes/nested_scheme.h>
+#include <phasefield/schemes/time_stepping_scheme.h>
+#include <phasefield/solvers/augmented_lagrangian.h>
+#include <phasefield/solvers/linear_solver.h>
+
+/**
+ * The nested step of thesis chapter 3 solved as in thesis chapter 7: the
+ * minimisation of the outer energy over (U, V) under the constraint that
+ * V solves the inner (Allen-Cahn) equation, by the augmented-Lagrangian
+ * method (augmented_lagrangian_minimize()) with a trust-region inner
+ * solver (trust_region_minimize(), Steihaug-Toint truncated CG with
+ * matrix-free Hessian products).
+ */
+namespace PhaseField
+{
+  /**
+   * One step as a constrained minimisation in x = (U, V) (two blocks):
+   *
+   *   f(U, V) = s (|U-U^k|_M^2 + a |V-U|_M^2 - 2 (tau/eps) F.U),
+   *   c(U, V) = M C(U, V) = M(V-U) + c M Psi'(V) + ttau L V = R_P,
+   *
+   * with a = tau/ttau^2, c = ttau/(2 eps^2) (0 for the biharmonic model),
+   * F the forcing of the biharmonic model, s = 1 (scaled, thesis (7.9):
+   * f = e_out/eps) or s = eps (unscaled: f = e_out). The derivatives are
+   *
+   *   grad f = 2s (M(U-U^k) - a M(V-U) - (tau/eps) F,  a M(V-U)),
+   *   f''    = 2s [(1+a)M  -aM; -aM  aM],
+   *   c'(d)  = -M d_U + K(V) d_V,   c'^T y = (-M y, K(V) y),
+   *   sum_i y_i c_i'' d = (0, c M[Psi'''(V) y] d_V),
+   *
+   * K(V) = M + c M[Psi''(V)] + ttau L applied matrix-free (nodal weights
+   * of NestedWeights and the stiffness matrix). The constrained minimiser
+   * is the (U, V) of the nested step's saddle point; the multipliers are
+   * related by P_AL = -2 s P_nested.
+   *
+   * Preconditioner with a solver set by set_schur_solver() (the direct
+   * solver, 2D): B = f'' + lambda J^T M^-1 J (the Hessian without the
+   * third-derivative term), inverted exactly by eliminating U (its UU
+   * block (s(1+a) + lambda) M is diagonal; here s = f_scale):
+   *
+   *   S_V = (lambda s (1+a)/beta) Khat M^-1 Khat
+   *         + (s a/beta)(s + lambda/(1+a)) M,
+   *   beta = s(1+a) + lambda,  Khat = K - a/(1+a) M,
+   *
+   * assembled and factorised once per trust-region iterate.
+   * Without a solver it is nodal block Jacobi: at every DoF the 2x2 block
+   * of the Hessian of l_A (with diag(K M^-1 K)_ii approximated by
+   * sum_j K_ij^2 / m_i), made positive definite by dropping first the
+   * Psi''' term and then the U-V coupling where it is not.
+   */
+  template <int dim>
+  class AugmentedLagrangianStep : public ConstrainedMinimizationProblem
+  {
+  public:
+    /**
+     * The step from @p old_u (which must outlive this object); @p scaled:
+     * s = 1, else s = epsilon.
+     */
+    AugmentedLagrangianStep(const Discretization<dim> &discretization,
+                            const NestedCoefficients  &coefficients,
+                            const Vector              &old_u,
+                            const bool                 scaled);
+
+    double
+    objective(const BlockVector &x) const override;
+    void
+    objective_gradient(const BlockVector &x, BlockVector &g) const override;
+    void
+    objective_hessian_vmult(const BlockVector &x,
+                            const BlockVector &d,
+                            BlockVector       &y) const override;
+    void
+    constraint(const BlockVector &x, Vector &c) const override;
+    void
+    constraint_jacobian_vmult(const BlockVector &x,
+                              const BlockVector &d,
+                              Vector            &jd) const override;
+    void
+    constraint_jacobian_tvmult(const BlockVector &x,
+                               const Vector      &y,
+                               BlockVector       &g) const override;
+    void
+    constraint_hessian_vmult(const BlockVector &x,
+                             const Vector      &y,
+                             const BlockVector &d,
+                             BlockVector       &out) const override;
+    void
+    riesz(const Vector &c, Vector &out) const override;
+    /** sqrt(g^T M^-1 g) over both blocks. */
+    double
+    gradient_norm(const BlockVector &g) const override;
+    void
+    setup_preconditioner(const BlockVector &x,
+                         const Vector      &y,
+                         const double       penalty) override;
+    void
+    precondition(const BlockVector &r, BlockVector &z) const override;
+    void
+    distribute_constraints(BlockVector &x) const override;
+
+    /**
+     * Use the exact Schur-complement preconditioner with @p solver (must
+     * be of the direct type and outlive this object).
+     */
+    void
+    set_schur_solver(LinearSolver &solver)
+    {
+      schur_solver = &solver;
+    }
+
+    /**
+     * A two-block vector (U, V) in the layout of the DoFs, zero.
+     */
+    BlockVector
+    make_point() const;
+
+  private:
+    /** @p kd = K(V) @p d, matrix-free. */
+    void
+    k_vmult(const Vector &v, const Vector &d, Vector &kd) const;
+
+    /**
+     * Below this relative determinant a nodal 2x2 block of the
+     * preconditioner is not used as it is (see the class documentation).
+     */
+    static constexpr double min_relative_determinant = 1e-6;
+
+    const Discretization<dim>  &discretization;
+    const LumpedOperators<dim> &ops;
+    const NestedCoefficients    coeff;
+    const NestedWeights         weights;
+    const Vector               &old_u;
+    /** The factor 2s of f. */
+    const double f_scale;
+    /** R_P of the nested step: c(x). */
+    const NestedStep<dim> nested_step;
+    /** Nodal block Jacobi (no Schur solver). */
+    void
+    setup_block_jacobi(const BlockVector &x,
+                       const Vector      &y,
+                       const double       penalty);
+    /** The Schur complement S_V of the class documentation, factorised. */
+    void
+    setup_schur(const BlockVector &x, const double penalty);
+
+    /** Entries of the inverse nodal 2x2 blocks of the preconditioner. */
+    Vector inverse_uu, inverse_uv, inverse_vv;
+    /** The direct solver of S_V, or null. */
+    LinearSolver *schur_solver = nullptr;
+    /** S_V, the V of the iterate and the coefficients of B. */
+    dealii::TrilinosWrappers::SparseMatrix schur;
+    Vector                                 schur_v;
+    double                                 schur_beta    = 0;
+    double                                 schur_penalty = 0;
+  };
+
+  /**
+   * `Time stepping / Scheme = augmented lagrangian`: state (U, V, P) with
+   * P the multiplier of the augmented Lagrangian, one
+   * augmented_lagrangian_minimize() of an AugmentedLagrangianStep per time
+   * step, warm-started from the last state. The penalty starts at
+   * `Initial penalty` and each later step at max(lambda_final / 100^2,
+   * Initial penalty); reset_solver() resets it. Initialisation, energies,
+   * curvature and the energy law are those of NestedScheme (the same
+   * discrete problem), except that P starts at `Initial multiplier`.
+   */
+  template <int dim>
+  class AugmentedLagrangianScheme : public TimeSteppingScheme<dim>
+  {
+  public:
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    AugmentedLagrangianScheme(const SchemeSettings             &settings,
+                              const Discretization<dim>        &discretization,
+                              const dealii::ConditionalOStream &pcout);
+
+    std::string
+    name() const override;
+    std::vector<std::string>
+    field_names() const override;
+    std::string
+    linear_solver_description() const override;
+    std::vector<std::string>
+    warnings() const override;
+    void
+    initialize(BlockVector &state, const double tau) override;
+    void
+    prepare_step(BlockVector &state,
+                 const double state_tau,
+                 const double tau) const override;
+    StepReport
+    advance(const BlockVector &old_state,
+            BlockVector       &state,
+            const double       tau) override;
+    void
+    after_remesh(BlockVector &state, const double tau) override;
+    void
+    reset_solver() override;
+    Energies
+    energies(const BlockVector &state) const override;
+    /** No factorisations: 0. */
+    unsigned int
+    n_factorizations() const override
+    {
+      return 0;
+    }
+    void
+    curvature(const BlockVector &state, Vector &curvature) const override;
+    bool
+    has_energy_law() const override
+    {
+      return true;
+    }
+    double
+    energy_law_energy(const BlockVector &state) const override;
+    double
+    dissipation(const BlockVector &old_state,
+                const BlockVector &state,
+                const double       tau) const override;
+
+  private:
+    /** The control of augmented_lagrangian_minimize() from the settings. */
+    AugmentedLagrangianControl
+    control() const;
+
+    const SchemeSettings              settings;
+    const Discretization<dim>        &discretization;
+    const dealii::ConditionalOStream &pcout;
+    /** Initialisation, energies and energy law of the same problem. */
+    NestedScheme<dim> nested;
+    /** The penalty the next step starts with. */
+    double next_penalty;
+    /** The solver of the Schur preconditioner (direct type only). */
+    std::unique_ptr<LinearSolver> schur_solver;
+  };
+} // namespace PhaseField
+
+#endif

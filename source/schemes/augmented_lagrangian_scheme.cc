@@ -1,0 +1,583 @@
+#include <algorithm>
+#include <cmath>
+#include <phasefield/schemes/augmented_lagrangian_scheme.h>
+#include <phasefield/schemes/double_well.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** Block indices of the point x = (U, V) of a step. */
+    constexpr unsigned int x_u = 0;
+    constexpr unsigned int x_v = 1;
+  } // namespace
+
+
+
+  template <int dim>
+  AugmentedLagrangianStep<dim>::AugmentedLagrangianStep(
+    const Discretization<dim> &discretization,
+    const NestedCoefficients  &coefficients,
+    const Vector              &old_u,
+    const bool                 scaled)
+    : discretization(discretization)
+    , ops(discretization.get_operators())
+    , coeff(coefficients)
+    , weights(coefficients)
+    , old_u(old_u)
+    , f_scale(2 * (scaled ? 1. : coefficients.epsilon))
+    , nested_step(discretization, coefficients, old_u)
+  {}
+
+
+
+  template <int dim>
+  typename AugmentedLagrangianStep<dim>::BlockVector
+  AugmentedLagrangianStep<dim>::make_point() const
+  {
+    return BlockVector(std::vector<IndexSet>(2, ops.locally_owned_dofs),
+                       discretization.get_mpi_communicator());
+  }
+
+
+
+  template <int dim>
+  double
+  AugmentedLagrangianStep<dim>::objective(const BlockVector &x) const
+  {
+    const Vector &u = x.block(x_u);
+    Vector        difference(u);
+    difference -= old_u;
+    double value = ops.mass_product(difference, difference);
+    difference   = x.block(x_v);
+    difference -= u;
+    value += weights.a * ops.mass_product(difference, difference);
+    if (coeff.outer.forcing != nullptr)
+      value -= 2 * coeff.tau / coeff.epsilon * (*coeff.outer.forcing * u);
+    return 0.5 * f_scale * value;
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::objective_gradient(const BlockVector &x,
+                                                   BlockVector       &g) const
+  {
+    const double *m  = ops.lumped_mass.begin();
+    const double *u  = x.block(x_u).begin();
+    const double *v  = x.block(x_v).begin();
+    const double *uk = old_u.begin();
+    const double *f =
+      coeff.outer.forcing ? coeff.outer.forcing->begin() : nullptr;
+    const double       forcing_factor = coeff.tau / coeff.epsilon;
+    const unsigned int n              = x.block(x_u).locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double a_difference = weights.a * m[i] * (v[i] - u[i]);
+        g.block(x_u).begin()[i] =
+          f_scale * (m[i] * (u[i] - uk[i]) - a_difference -
+                     (f ? forcing_factor * f[i] : 0.));
+        g.block(x_v).begin()[i] = f_scale * a_difference;
+      }
+    for (unsigned int b = 0; b < 2; ++b)
+      ops.zero_constrained(g.block(b));
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::objective_hessian_vmult(const BlockVector &,
+                                                        const BlockVector &d,
+                                                        BlockVector &y) const
+  {
+    const double      *m  = ops.lumped_mass.begin();
+    const double      *du = d.block(x_u).begin();
+    const double      *dv = d.block(x_v).begin();
+    const double       a  = weights.a;
+    const unsigned int n  = d.block(x_u).locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        y.block(x_u).begin()[i] =
+          f_scale * m[i] * ((1 + a) * du[i] - a * dv[i]);
+        y.block(x_v).begin()[i] = f_scale * m[i] * a * (dv[i] - du[i]);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::constraint(const BlockVector &x,
+                                           Vector            &c) const
+  {
+    nested_step.inner_residual(x.block(x_u), x.block(x_v), c);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::k_vmult(const Vector &v,
+                                        const Vector &d,
+                                        Vector       &kd) const
+  {
+    // K(V) d = ttau L d + M[k(V)] d
+    ops.stiffness.vmult(kd, d);
+    kd *= weights.inner_tau;
+    const double      *m = ops.lumped_mass.begin();
+    const unsigned int n = d.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      kd.begin()[i] += m[i] * weights.k(v.begin()[i]) * d.begin()[i];
+    ops.zero_constrained(kd);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::constraint_jacobian_vmult(const BlockVector &x,
+                                                          const BlockVector &d,
+                                                          Vector &jd) const
+  {
+    // c'(d) = -M d_U + K(V) d_V
+    k_vmult(x.block(x_v), d.block(x_v), jd);
+    const double      *m = ops.lumped_mass.begin();
+    const unsigned int n = jd.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      jd.begin()[i] -= m[i] * d.block(x_u).begin()[i];
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::constraint_jacobian_tvmult(const BlockVector &x,
+                                                           const Vector      &y,
+                                                           BlockVector &g) const
+  {
+    // c'^T y = (-M y, K(V) y)
+    k_vmult(x.block(x_v), y, g.block(x_v));
+    g.block(x_u) = y;
+    g.block(x_u).scale(ops.lumped_mass);
+    g.block(x_u) *= -1;
+    ops.zero_constrained(g.block(x_u));
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::constraint_hessian_vmult(const BlockVector &x,
+                                                         const Vector      &y,
+                                                         const BlockVector &d,
+                                                         BlockVector &out) const
+  {
+    // (0, c M[Psi'''(V) y] d_V)
+    out.block(x_u)       = 0;
+    const double      *m = ops.lumped_mass.begin();
+    const double      *v = x.block(x_v).begin();
+    const unsigned int n = y.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      out.block(x_v).begin()[i] =
+        m[i] * weights.e(v[i], y.begin()[i]) * d.block(x_v).begin()[i];
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::riesz(const Vector &c, Vector &out) const
+  {
+    out = c;
+    out.scale(ops.inverse_lumped_mass);
+    ops.zero_constrained(out);
+  }
+
+
+
+  template <int dim>
+  double
+  AugmentedLagrangianStep<dim>::gradient_norm(const BlockVector &g) const
+  {
+    return std::sqrt(std::pow(ops.dual_norm(g.block(x_u)), 2) +
+                     std::pow(ops.dual_norm(g.block(x_v)), 2));
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::setup_preconditioner(const BlockVector &x,
+                                                     const Vector      &y,
+                                                     const double       penalty)
+  {
+    if (schur_solver != nullptr)
+      setup_schur(x, penalty);
+    else
+      setup_block_jacobi(x, y, penalty);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::setup_schur(const BlockVector &x,
+                                            const double       penalty)
+  {
+    const double s    = f_scale;
+    const double a    = weights.a;
+    const double beta = s * (1 + a) + penalty;
+    schur_beta        = beta;
+    schur_penalty     = penalty;
+    schur_v           = x.block(x_v);
+    const Vector &v   = x.block(x_v);
+    Vector        k_hat_weight(v);
+    for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+      k_hat_weight.begin()[i] = weights.k(v.begin()[i], a / (1 + a));
+    TrilinosWrappers::SparseMatrix k_hat;
+    ops.stiffness_plus_weighted_mass(weights.inner_tau, k_hat_weight, k_hat);
+    Vector weight(ops.inverse_lumped_mass);
+    weight *= penalty * s * (1 + a) / beta;
+    k_hat.mmult(schur, k_hat, weight);
+    Vector diagonal(ops.lumped_mass);
+    diagonal *= s * a / beta * (s + penalty / (1 + a));
+    ops.add_to_diagonal(diagonal, schur);
+    schur_solver->reset();
+    schur_solver->set_constant_matrix(true);
+    schur_solver->factorize(schur);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::setup_block_jacobi(const BlockVector &x,
+                                                   const Vector      &y,
+                                                   const double       penalty)
+  {
+    inverse_uu.reinit(y, true);
+    inverse_uv.reinit(y, true);
+    inverse_vv.reinit(y, true);
+    const auto        &L  = ops.stiffness;
+    const double      *m  = ops.lumped_mass.begin();
+    const double      *v  = x.block(x_v).begin();
+    const double       a  = weights.a;
+    const double       tt = weights.inner_tau;
+    const unsigned int n  = y.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        if (!(m[i] > 0))
+          continue; // constrained: the block stays zero
+        const types::global_dof_index row =
+          ops.locally_owned_dofs.nth_index_in_set(i);
+        const double k_mass = m[i] * weights.k(v[i]);
+        // K_ii and sum_j K_ij^2 / m_i
+        double k_ii = k_mass, k_squares = 0;
+        for (auto entry = L.begin(row); entry != L.end(row); ++entry)
+          {
+            const bool   diagonal = entry->column() == row;
+            const double k_ij = tt * entry->value() + (diagonal ? k_mass : 0.);
+            if (diagonal)
+              k_ii = k_ij;
+            k_squares += k_ij * k_ij;
+          }
+        const double uu      = m[i] * (f_scale * (1 + a) + penalty);
+        double       uv      = -m[i] * f_scale * a - penalty * k_ii;
+        const double vv_base = m[i] * f_scale * a + penalty * k_squares / m[i];
+        double       vv      = vv_base + m[i] * weights.e(v[i], y.begin()[i]);
+        const auto   determinant = [&]() { return uu * vv - uv * uv; };
+        if (!(vv > 0) || determinant() <= min_relative_determinant * uu * vv)
+          vv = vv_base;
+        if (determinant() <= min_relative_determinant * uu * vv)
+          uv = 0;
+        const double det      = determinant();
+        inverse_uu.begin()[i] = vv / det;
+        inverse_uv.begin()[i] = -uv / det;
+        inverse_vv.begin()[i] = uu / det;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::precondition(const BlockVector &r,
+                                             BlockVector       &z) const
+  {
+    if (schur_solver != nullptr)
+      {
+        // B z = r: w = (beta M)^-1 r_U, S_V z_V = r_V + (s a M + lambda K) w,
+        // z_U = (beta M)^-1 (r_U + (s a M + lambda K) z_V)
+        const double s_a      = f_scale * weights.a;
+        const auto   coupling = [&](const Vector &in, Vector &out) {
+          k_vmult(schur_v, in, out);
+          out *= schur_penalty;
+          Vector mass_part(in);
+          mass_part.scale(ops.lumped_mass);
+          out.add(s_a, mass_part);
+          ops.zero_constrained(out);
+        };
+        Vector w(r.block(x_u)), rhs(w), cz(w);
+        w.scale(ops.inverse_lumped_mass);
+        w /= schur_beta;
+        ops.zero_constrained(w);
+        coupling(w, rhs);
+        rhs += r.block(x_v);
+        schur_solver->solve(schur, z.block(x_v), rhs);
+        ops.zero_constrained(z.block(x_v));
+        coupling(z.block(x_v), cz);
+        cz += r.block(x_u);
+        cz.scale(ops.inverse_lumped_mass);
+        cz /= schur_beta;
+        ops.zero_constrained(cz);
+        z.block(x_u) = cz;
+        return;
+      }
+    const unsigned int n = r.block(x_u).locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double ru = r.block(x_u).begin()[i], rv = r.block(x_v).begin()[i];
+        z.block(x_u).begin()[i] =
+          inverse_uu.begin()[i] * ru + inverse_uv.begin()[i] * rv;
+        z.block(x_v).begin()[i] =
+          inverse_uv.begin()[i] * ru + inverse_vv.begin()[i] * rv;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::distribute_constraints(BlockVector &x) const
+  {
+    discretization.distribute_constraints(x);
+  }
+
+
+
+  // ---------------------------------------------------------------------
+  // The scheme
+  // ---------------------------------------------------------------------
+
+  template <int dim>
+  AugmentedLagrangianScheme<dim>::AugmentedLagrangianScheme(
+    const SchemeSettings      &settings,
+    const Discretization<dim> &discretization,
+    const ConditionalOStream  &pcout)
+    : settings(settings)
+    , discretization(discretization)
+    , pcout(pcout)
+    , nested(settings, discretization, pcout)
+    , next_penalty(settings.augmented_lagrangian.initial_penalty)
+  {
+    if (LinearSolver::resolve_type(settings.linear_solver.type, dim) ==
+        LinearSolverType::direct)
+      schur_solver = std::make_unique<LinearSolver>(
+        LinearSolverType::direct,
+        settings.linear_solver.relative_tolerance,
+        settings.linear_solver.max_iterations);
+  }
+
+
+
+  template <int dim>
+  std::string
+  AugmentedLagrangianScheme<dim>::name() const
+  {
+    return scheme_name(Scheme::augmented_lagrangian);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  AugmentedLagrangianScheme<dim>::field_names() const
+  {
+    return {"U", "V", "P"};
+  }
+
+
+
+  template <int dim>
+  std::string
+  AugmentedLagrangianScheme<dim>::linear_solver_description() const
+  {
+    return schur_solver ?
+             "trust region, Steihaug-Toint truncated CG with matrix-free "
+             "Hessian products, Schur-complement preconditioner (MUMPS)" :
+             "trust region, Steihaug-Toint truncated CG with matrix-free "
+             "Hessian products, nodal block-Jacobi preconditioner";
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  AugmentedLagrangianScheme<dim>::warnings() const
+  {
+    return nested.warnings();
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianScheme<dim>::initialize(BlockVector &state,
+                                             const double tau)
+  {
+    // V from the inner problem (Algorithm 3.1), P = P0 at every node
+    nested.initialize(state, tau);
+    state.block(Field::P) = settings.augmented_lagrangian.initial_multiplier;
+    discretization.distribute_constraints(state);
+    next_penalty = settings.augmented_lagrangian.initial_penalty;
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianScheme<dim>::prepare_step(BlockVector &state,
+                                               const double state_tau,
+                                               const double tau) const
+  {
+    // P is proportional to tau, as in the nested scheme
+    nested.prepare_step(state, state_tau, tau);
+  }
+
+
+
+  template <int dim>
+  AugmentedLagrangianControl
+  AugmentedLagrangianScheme<dim>::control() const
+  {
+    const AugmentedLagrangianParameters &prm = settings.augmented_lagrangian;
+    AugmentedLagrangianControl           c;
+    c.gradient_tolerance             = prm.gradient_tolerance;
+    c.constraint_tolerance           = prm.constraint_tolerance;
+    c.initial_penalty                = next_penalty;
+    c.max_outer_iterations           = prm.max_outer_iterations;
+    c.trust_region.max_iterations    = prm.max_trust_region_iterations;
+    c.trust_region.max_cg_iterations = prm.max_cg_iterations;
+    return c;
+  }
+
+
+
+  template <int dim>
+  StepReport
+  AugmentedLagrangianScheme<dim>::advance(const BlockVector &old_state,
+                                          BlockVector       &state,
+                                          const double       tau)
+  {
+    AugmentedLagrangianStep<dim> step(discretization,
+                                      nested.coefficients(tau),
+                                      old_state.block(Field::U),
+                                      settings.augmented_lagrangian.scaled);
+    if (schur_solver)
+      step.set_schur_solver(*schur_solver);
+    BlockVector x = step.make_point();
+    x.block(0)    = state.block(Field::U);
+    x.block(1)    = state.block(Field::V);
+    Vector                          p(state.block(Field::P));
+    const AugmentedLagrangianReport al = augmented_lagrangian_minimize(
+      step, x, p, control(), pcout, settings.verbose);
+    state.block(Field::U) = x.block(0);
+    state.block(Field::V) = x.block(1);
+    state.block(Field::P) = p;
+
+    StepReport report;
+    report.converged         = al.converged;
+    report.newton_iterations = al.tr_iterations;
+    report.linear_iterations = al.cg_iterations;
+    report.al_iterations     = al.outer_iterations;
+    report.tr_iterations     = al.tr_iterations;
+    report.initial_residual_norm =
+      std::max(al.initial_gradient_norm, al.initial_constraint_norm);
+    report.final_residual_norm = std::max(al.gradient_norm, al.constraint_norm);
+    if (al.converged)
+      next_penalty =
+        std::max(al.final_penalty / AugmentedLagrangian::next_step_reduction,
+                 settings.augmented_lagrangian.initial_penalty);
+    else
+      pcout << "  augmented Lagrangian: no convergence after "
+            << al.outer_iterations << " outer and " << al.tr_iterations
+            << " trust-region iterations (|grad l_A| = " << al.gradient_norm
+            << ", |C| = " << al.constraint_norm
+            << "); raise <Augmented Lagrangian / Maximum outer iterations>, "
+               "<Maximum trust-region iterations>, <Maximum CG iterations> "
+               "or lower <Time stepping / Tau>."
+            << std::endl;
+    return report;
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianScheme<dim>::after_remesh(BlockVector &state,
+                                               const double tau)
+  {
+    nested.after_remesh(state, tau);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianScheme<dim>::reset_solver()
+  {
+    nested.reset_solver();
+    next_penalty = settings.augmented_lagrangian.initial_penalty;
+  }
+
+
+
+  template <int dim>
+  Energies
+  AugmentedLagrangianScheme<dim>::energies(const BlockVector &state) const
+  {
+    return nested.energies(state);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianScheme<dim>::curvature(const BlockVector &state,
+                                            Vector            &curvature) const
+  {
+    nested.curvature(state, curvature);
+  }
+
+
+
+  template <int dim>
+  double
+  AugmentedLagrangianScheme<dim>::energy_law_energy(
+    const BlockVector &state) const
+  {
+    return nested.energy_law_energy(state);
+  }
+
+
+
+  template <int dim>
+  double
+  AugmentedLagrangianScheme<dim>::dissipation(const BlockVector &old_state,
+                                              const BlockVector &state,
+                                              const double       tau) const
+  {
+    return nested.dissipation(old_state, state, tau);
+  }
+
+
+
+  template class AugmentedLagrangianStep<2>;
+  template class AugmentedLagrangianStep<3>;
+  template class AugmentedLagrangianScheme<2>;
+  template class AugmentedLagrangianScheme<3>;
+} // namespace PhaseField
