@@ -209,10 +209,9 @@ namespace PhaseField
         state_tau = tau;
         time += tau;
         last_step = step;
-        record(step, state, report, tau);
-        const bool finished =
-          step == final_step ||
-          client.finished(step, state, scheme.energies(state));
+        const Energies energies = record(step, state, report, tau);
+        const bool     finished =
+          step == final_step || client.finished(step, state, energies);
         // a checkpoint holds the start of the next step: after the last
         // step too, the mesh is adapted for it
         const bool checkpoint = checkpoints > 0 && step % checkpoints == 0;
@@ -329,7 +328,7 @@ namespace PhaseField
 
 
   template <int dim>
-  void
+  Energies
   TimeLoop<dim>::record(const unsigned int step,
                         const BlockVector &state,
                         const StepReport  &report,
@@ -380,6 +379,7 @@ namespace PhaseField
     if (with_output && settings.vtu_interval > 0 &&
         (step % settings.vtu_interval == 0 || step == final_step))
       output_results(step, state);
+    return e;
   }
 
 

@@ -261,9 +261,9 @@ namespace PhaseField
 
     /**
      * Statistics row, progress line and (if due and @p with_output) VTU
-     * output of step @p step.
+     * output of step @p step; returns the energies of @p state.
      */
-    void
+    Energies
     record(const unsigned int step,
            const BlockVector &state,
            const StepReport  &report,
