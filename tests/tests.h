@@ -101,22 +101,25 @@ namespace Testing
 
   /**
    * Run shape_from_contour on the parameters in @p prm_text (output
-   * directory "results") and return the rows of statistics.csv.
+   * directory @p directory) and return the rows of statistics.csv.
    */
   inline std::vector<std::vector<double>>
-  run_contour(const std::string &prm_text, std::vector<std::string> &header)
+  run_contour(const std::string        &prm_text,
+              std::vector<std::string> &header,
+              const std::string        &directory = "results")
   {
     dealii::ParameterHandler prm;
     PhaseField::ContourParameters::declare_parameters(prm);
     prm.parse_input_from_string(prm_text +
-                                "\nset Output directory = results\n");
+                                "\nset Output directory = " + directory +
+                                "\n");
     PhaseField::ContourParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.willmore.dimension == 2)
       PhaseField::ContourProblem<2>(parameters).run();
     else
       PhaseField::ContourProblem<3>(parameters).run();
-    return read_csv("results/statistics.csv", header);
+    return read_csv(directory + "/statistics.csv", header);
   }
 
   /** The statistics.csv columns that the program tests compare. */

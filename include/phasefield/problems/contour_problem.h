@@ -82,6 +82,19 @@ namespace PhaseField
              const BlockVector &state,
              const Energies    &energies) override;
 
+    /**
+     * The multilevel position for a checkpoint: the index of the level in
+     * `Multilevel / Levels`, the level, and the total energies of the
+     * level's steps so far (the automatic transition looks back on them).
+     */
+    std::vector<double>
+    checkpoint_data() const override;
+
+    /** The energy history of the level from checkpoint_data(). */
+    void
+    after_load(BlockVector               &state,
+               const std::vector<double> &problem_data) override;
+
     /** level, mismatch_energy, labeling_error, total_energy. */
     std::vector<std::string>
     extra_columns() const override;
@@ -120,6 +133,17 @@ namespace PhaseField
     mismatch(const BlockVector &state) const;
 
   private:
+    /** Entries of checkpoint_data() before the energy history. */
+    static constexpr unsigned int n_level_entries = 2;
+
+    /**
+     * `Checkpoint / Resume`: the index in `Multilevel / Levels` of the
+     * level of the newest checkpoint. Throws InputError if it was not
+     * written by this program or on these levels. Collective.
+     */
+    unsigned int
+    resumed_level_index() const;
+
     /**
      * Set the pixel grid and the target labeling of level number
      * @p index, and the parameters of that level.
