@@ -15,20 +15,21 @@
 //   the level-start row that repeats step 3.
 // The statistics.csv rows (all columns but wall_seconds: energies,
 // mismatch, labeling error, iterations) must agree bitwise with the
-// uninterrupted run.
+// uninterrupted run in serial; the .mpirun=2 variant saves and loads on 2
+// ranks, where all columns but residual_norm (round-off of the parallel
+// direct solver, which differs between two identical runs) must agree to
+// the 10 digits of statistics.csv.
 // Resuming with other Multilevel / Levels than the writer's is an
 // InputError.
 
 #include "tests.h"
 
 #include <deal.II/base/mpi.h>
-
 #include <fstream>
 
 namespace
 {
   using namespace PhaseField;
-  using Rows = std::vector<std::vector<double>>;
 
   const std::string base_prm = R"(
 set Dimension = 2
@@ -67,29 +68,33 @@ end
     return parameters("5, 6", "5, 5", resume);
   }
 
-  /** statistics.csv of @p directory after a run, without wall_seconds. */
-  Rows
+  /** statistics.csv of @p directory after a run on @p prm_text. */
+  Testing::RunResult
   run(const std::string &prm_text, const std::string &directory)
   {
-    std::vector<std::string> header;
-    Rows rows = Testing::run_contour(prm_text, header, directory);
-    const int wall = Testing::column(header, "wall_seconds");
-    for (auto &row : rows)
-      row.erase(row.begin() + wall);
-    return rows;
+    Testing::RunResult result;
+    result.rows = Testing::run_contour(prm_text, result.header, directory);
+    return result;
   }
 
-  /** Bitwise equality of two tables with NaN equal to NaN. */
-  bool
-  equal(const Rows &a, const Rows &b)
+  /**
+   * Whether @p resumed agrees with @p reference in all columns but
+   * wall_seconds: bitwise in serial (direct solver); on 2 ranks, where two
+   * identical runs already differ in the round-off of residual_norm (the
+   * parallel direct solver), the other columns to the 10 digits of
+   * statistics.csv.
+   */
+  std::string
+  agrees(const Testing::RunResult &reference, const Testing::RunResult &resumed)
   {
-    if (a.size() != b.size())
-      return false;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      for (unsigned int j = 0; j < a[i].size(); ++j)
-        if (a[i][j] != b[i][j] && !(std::isnan(a[i][j]) && std::isnan(b[i][j])))
-          return false;
-    return true;
+    constexpr double csv_digits_tolerance = 1e-8;
+    const bool       serial =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1;
+    const double difference =
+      serial ?
+        Testing::max_relative_difference(reference, resumed) :
+        Testing::max_relative_difference(reference, resumed, {"residual_norm"});
+    return difference <= (serial ? 0. : csv_digits_tolerance) ? "yes" : "NO";
   }
 
   /**
@@ -120,26 +125,26 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostream &log = Testing::log();
+  std::ostream                            &log = Testing::log();
 
-  const Rows reference = run(full(false), "uninterrupted");
-  log << "uninterrupted: " << reference.size()
-      << " rows (0-3 on level 5, the level-start row and 4-6 on level 6)"
+  const Testing::RunResult reference = run(full(false), "uninterrupted");
+  log << "uninterrupted: steps";
+  for (const auto &row : reference.rows)
+    log << ' ' << row[Testing::column(reference.header, "step")];
+  log << " (0-3 on level 5, the level-start row 3 and 4-6 on level 6)"
       << std::endl;
-  for (const auto &row : reference)
-    log << "  step " << row[0] << std::endl;
 
   run(parameters("5", "2", false), "interrupted");
-  const Rows interrupted = run(full(true), "interrupted");
-  log << "resumed after step 2 of level 5: rows bitwise equal: "
-      << (equal(reference, interrupted) ? "yes" : "NO") << std::endl;
+  const Testing::RunResult interrupted = run(full(true), "interrupted");
+  log << "resumed after step 2 of level 5: statistics.csv agrees: "
+      << agrees(reference, interrupted) << std::endl;
 
   run(parameters("5", "5", false), "killed");
   append_later_rows("uninterrupted", "killed", 4);
-  const Rows killed = run(full(true), "killed");
-  log << "resumed after the end of level 5 (later rows dropped): rows "
-         "bitwise equal: "
-      << (equal(reference, killed) ? "yes" : "NO") << std::endl;
+  const Testing::RunResult killed = run(full(true), "killed");
+  log << "resumed after the end of level 5 (later rows dropped): "
+         "statistics.csv agrees: "
+      << agrees(reference, killed) << std::endl;
 
   try
     {

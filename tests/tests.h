@@ -4,11 +4,13 @@
 #ifndef phasefield_tests_tests_h
 #define phasefield_tests_tests_h
 
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <phasefield/core/parameters.h>
 #include <phasefield/problems/contour_problem.h>
 #include <phasefield/problems/restoration_parameters.h>
@@ -111,8 +113,7 @@ namespace Testing
     dealii::ParameterHandler prm;
     PhaseField::ContourParameters::declare_parameters(prm);
     prm.parse_input_from_string(prm_text +
-                                "\nset Output directory = " + directory +
-                                "\n");
+                                "\nset Output directory = " + directory + "\n");
     PhaseField::ContourParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.willmore.dimension == 2)
@@ -285,6 +286,31 @@ namespace Testing
     std::vector<std::vector<double>> rows;
     std::vector<double>              field_norms;
   };
+
+  /**
+   * Largest relative difference of @p a and @p b over all rows and all
+   * columns but wall_seconds and those in @p ignored (infinite if the
+   * tables differ in shape).
+   */
+  inline double
+  max_relative_difference(const RunResult                &a,
+                          const RunResult                &b,
+                          const std::vector<std::string> &ignored = {})
+  {
+    if (a.rows.size() != b.rows.size() || a.header != b.header)
+      return std::numeric_limits<double>::infinity();
+    double max = 0;
+    for (unsigned int j = 0; j < a.header.size(); ++j)
+      if (a.header[j] != "wall_seconds" &&
+          std::find(ignored.begin(), ignored.end(), a.header[j]) ==
+            ignored.end())
+        for (unsigned int i = 0; i < a.rows.size(); ++i)
+          if (!(std::isnan(a.rows[i][j]) && std::isnan(b.rows[i][j])))
+            max = std::max(max,
+                           std::abs(a.rows[i][j] - b.rows[i][j]) /
+                             std::max(std::abs(a.rows[i][j]), 1e-300));
+    return max;
+  }
 
   /**
    * Run the program of @p Problem (constructed from @p Parameters) on

@@ -19,9 +19,9 @@ namespace PhaseField
     contour_setup(const ContourParameters &parameters)
     {
       typename PhaseFieldProblem<dim>::Setup setup;
-      setup.program_name    = "shape_from_contour";
-      setup.signed_distance = Shapes::create_signed_distance<dim>(
-        parameters.willmore.geometry);
+      setup.program_name = "shape_from_contour";
+      setup.signed_distance =
+        Shapes::create_signed_distance<dim>(parameters.willmore.geometry);
       setup.outer_energy.willmore_weight = parameters.model.willmore_weight;
       setup.outer_energy.area_weight     = parameters.model.area_weight;
       return setup;
@@ -61,8 +61,7 @@ namespace PhaseField
   void
   ContourProblem<dim>::run()
   {
-    create_output_directory(this->prm.output_directory,
-                            this->mpi_communicator);
+    create_output_directory(this->prm.output_directory, this->mpi_communicator);
     const bool         resume = this->prm.checkpoint.resume;
     const unsigned int first  = resume ? resumed_level_index() : 0;
     level_prm                 = parameters.for_level(first);
@@ -119,8 +118,7 @@ namespace PhaseField
   ContourProblem<dim>::resumed_level_index() const
   {
     const std::string path =
-      Checkpoint::find_last(this->prm.output_directory,
-                            this->mpi_communicator);
+      Checkpoint::find_last(this->prm.output_directory, this->mpi_communicator);
     const std::vector<double> data =
       Checkpoint::read_state(path, this->mpi_communicator).problem_data;
     if (data.size() < n_level_entries)
@@ -128,8 +126,8 @@ namespace PhaseField
                        "> was not written by shape_from_contour (it has no "
                        "level): <Checkpoint / Resume> needs the output "
                        "directory of a shape_from_contour run.");
-    const unsigned int index = static_cast<unsigned int>(data[0]);
-    const unsigned int level = static_cast<unsigned int>(data[1]);
+    const unsigned int               index = static_cast<unsigned int>(data[0]);
+    const unsigned int               level = static_cast<unsigned int>(data[1]);
     const std::vector<unsigned int> &levels = parameters.multilevel.levels;
     if (index >= levels.size() || levels[index] != level)
       throw InputError("The checkpoint <" + path + "> was written on level " +
@@ -242,8 +240,8 @@ namespace PhaseField
   {
     const LumpedOperators<dim> &ops = this->discretization.get_operators();
     Vector                      u(ops.locally_owned_dofs,
-                 ops.locally_relevant_dofs,
-                 this->mpi_communicator);
+             ops.locally_relevant_dofs,
+             this->mpi_communicator);
     u = state.block(0);
     return u;
   }
@@ -350,9 +348,9 @@ namespace PhaseField
     const unsigned int window = parameters.multilevel.window;
     if (energy_history.size() <= window)
       return false;
-    const double now      = energy_history.back();
-    const double decrease = energy_history[energy_history.size() - 1 - window] -
-                            now;
+    const double now = energy_history.back();
+    const double decrease =
+      energy_history[energy_history.size() - 1 - window] - now;
     if (decrease >= parameters.multilevel.tolerance * std::abs(now))
       return false;
     this->pcout << "  total energy decreased by " << decrease << " over "
@@ -393,7 +391,7 @@ namespace PhaseField
   {
     TimerOutput::Scope t(this->computing_timer, "output: labelings");
     const HuffmanLabeling::LabelingGrid<dim> centres(grid->level(), true);
-    ContourOutput::Labelings<dim> labelings{
+    ContourOutput::Labelings<dim>            labelings{
       centres,
       target_on(centres),
       HuffmanLabeling::labeling(this->discretization.get_dof_handler(),

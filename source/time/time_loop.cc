@@ -210,7 +210,7 @@ namespace PhaseField
           check_energy_law(step, state, energy_before, tau);
         state_tau = tau;
         time += tau;
-        last_step = step;
+        last_step               = step;
         const Energies energies = record(step, state, report, tau);
         // asked after every step, the last one too: the client may keep
         // a history that a checkpoint of this step holds

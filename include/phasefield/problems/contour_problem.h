@@ -17,7 +17,8 @@ namespace PhaseField
    * Huffman labeling along the last axis is the given alpha*, minimising
    * the regularisation energy of (6.3),
    *
-   *   eta a_eps[u] + mu (eps/2) ||(v-u)/ttau||^2 + gamma ||alpha* - alpha[u]||^2,
+   *   eta a_eps[u] + mu (eps/2) ||(v-u)/ttau||^2 + gamma ||alpha* -
+   * alpha[u]||^2,
    *
    * by the operator splitting of Algorithm 6.1, one step of size tau:
    *
@@ -175,7 +176,7 @@ namespace PhaseField
     Vector
     ghosted_u(const BlockVector &state) const;
 
-    const ContourParameters                            &parameters;
+    const ContourParameters &parameters;
     /** The parameters of the current level. */
     WillmoreParameters                                  level_prm;
     unsigned int                                        level_index = 0;
