@@ -60,31 +60,6 @@ end
   }
 
   /**
-   * Largest relative difference of @p a and @p b over all rows and all
-   * columns but wall_seconds and those in @p ignored (infinite if the
-   * tables differ in shape).
-   */
-  double
-  max_relative_difference(const RunResult               &a,
-                          const RunResult               &b,
-                          const std::vector<std::string> ignored = {})
-  {
-    if (a.rows.size() != b.rows.size() || a.header != b.header)
-      return std::numeric_limits<double>::infinity();
-    double max = 0;
-    for (unsigned int j = 0; j < a.header.size(); ++j)
-      if (a.header[j] != "wall_seconds" &&
-          std::find(ignored.begin(), ignored.end(), a.header[j]) ==
-            ignored.end())
-        for (unsigned int i = 0; i < a.rows.size(); ++i)
-          if (!(std::isnan(a.rows[i][j]) && std::isnan(b.rows[i][j])))
-            max = std::max(max,
-                           std::abs(a.rows[i][j] - b.rows[i][j]) /
-                             std::max(std::abs(a.rows[i][j]), 1e-300));
-    return max;
-  }
-
-  /**
    * Print whether @p resumed agrees with @p reference. In serial it must
    * agree bitwise. On 2 ranks two identical runs already differ by
    * round-off (residual_norm of the converged step, from the parallel
@@ -100,9 +75,9 @@ end
     Testing::log() << name << ": " << resumed.rows.size()
                    << " rows, all columns but wall_seconds and "
                       "residual_norm agree to 1e-8: "
-                   << (max_relative_difference(reference,
-                                               resumed,
-                                               {"residual_norm"}) <=
+                   << (Testing::max_relative_difference(reference,
+                                                        resumed,
+                                                        {"residual_norm"}) <=
                            csv_digits_tolerance ?
                          "yes" :
                          "NO")
@@ -110,13 +85,15 @@ end
     if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
       return;
     constexpr double tolerance = 1e-12;
-    Testing::log()
-      << "  all columns but wall_seconds agree to 1e-12: "
-      << (max_relative_difference(reference, resumed) <= tolerance ? "yes" :
-                                                                     "NO")
-      << ", final fields bitwise equal: "
-      << (reference.field_norms == resumed.field_norms ? "yes" : "NO")
-      << std::endl;
+    Testing::log() << "  all columns but wall_seconds agree to 1e-12: "
+                   << (Testing::max_relative_difference(reference, resumed) <=
+                           tolerance ?
+                         "yes" :
+                         "NO")
+                   << ", final fields bitwise equal: "
+                   << (reference.field_norms == resumed.field_norms ? "yes" :
+                                                                      "NO")
+                   << std::endl;
   }
 
   /** Number of <DataSet entries in @p filename. */

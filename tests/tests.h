@@ -4,11 +4,13 @@
 #ifndef phasefield_tests_tests_h
 #define phasefield_tests_tests_h
 
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <phasefield/core/parameters.h>
 #include <phasefield/problems/contour_problem.h>
 #include <phasefield/problems/restoration_parameters.h>
@@ -101,22 +103,24 @@ namespace Testing
 
   /**
    * Run shape_from_contour on the parameters in @p prm_text (output
-   * directory "results") and return the rows of statistics.csv.
+   * directory @p directory) and return the rows of statistics.csv.
    */
   inline std::vector<std::vector<double>>
-  run_contour(const std::string &prm_text, std::vector<std::string> &header)
+  run_contour(const std::string        &prm_text,
+              std::vector<std::string> &header,
+              const std::string        &directory = "results")
   {
     dealii::ParameterHandler prm;
     PhaseField::ContourParameters::declare_parameters(prm);
     prm.parse_input_from_string(prm_text +
-                                "\nset Output directory = results\n");
+                                "\nset Output directory = " + directory + "\n");
     PhaseField::ContourParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.willmore.dimension == 2)
       PhaseField::ContourProblem<2>(parameters).run();
     else
       PhaseField::ContourProblem<3>(parameters).run();
-    return read_csv("results/statistics.csv", header);
+    return read_csv(directory + "/statistics.csv", header);
   }
 
   /** The statistics.csv columns that the program tests compare. */
@@ -282,6 +286,31 @@ namespace Testing
     std::vector<std::vector<double>> rows;
     std::vector<double>              field_norms;
   };
+
+  /**
+   * Largest relative difference of @p a and @p b over all rows and all
+   * columns but wall_seconds and those in @p ignored (infinite if the
+   * tables differ in shape).
+   */
+  inline double
+  max_relative_difference(const RunResult                &a,
+                          const RunResult                &b,
+                          const std::vector<std::string> &ignored = {})
+  {
+    if (a.rows.size() != b.rows.size() || a.header != b.header)
+      return std::numeric_limits<double>::infinity();
+    double max = 0;
+    for (unsigned int j = 0; j < a.header.size(); ++j)
+      if (a.header[j] != "wall_seconds" &&
+          std::find(ignored.begin(), ignored.end(), a.header[j]) ==
+            ignored.end())
+        for (unsigned int i = 0; i < a.rows.size(); ++i)
+          if (!(std::isnan(a.rows[i][j]) && std::isnan(b.rows[i][j])))
+            max = std::max(max,
+                           std::abs(a.rows[i][j] - b.rows[i][j]) /
+                             std::max(std::abs(a.rows[i][j]), 1e-300));
+    return max;
+  }
 
   /**
    * Run the program of @p Problem (constructed from @p Parameters) on

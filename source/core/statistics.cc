@@ -13,8 +13,11 @@ namespace PhaseField
   namespace
   {
     /**
-     * The lines of the CSV file @p filename after its header @p header
-     * whose first entry (the step) is at most @p last_kept_step.
+     * The lines of the CSV file @p filename after its header @p header up
+     * to the first one whose first entry (the step) is @p last_kept_step:
+     * the rows of the steps up to it, without a later row of the same
+     * step (the level-start row of shape_from_contour repeats the last
+     * step of the previous level, and it is written again on resume).
      */
     std::vector<std::string>
     rows_up_to_step(const std::string &filename,
@@ -32,9 +35,16 @@ namespace PhaseField
           "> are not those of this run <" + header + ">.");
       std::vector<std::string> rows;
       while (std::getline(in, line))
-        if (!line.empty() &&
-            std::stod(line.substr(0, line.find(','))) <= last_kept_step)
+        {
+          if (line.empty())
+            continue;
+          const double step = std::stod(line.substr(0, line.find(',')));
+          if (step > last_kept_step)
+            break;
           rows.push_back(line);
+          if (step == last_kept_step)
+            break;
+        }
       return rows;
     }
   } // namespace

@@ -220,11 +220,6 @@ namespace PhaseField
       throw InputError("shape_from_contour needs <Time stepping / Scheme> = "
                        "nested: the Willmore and area weights of its "
                        "regularisation are part of the nested scheme only.");
-    if (willmore.checkpoint.interval > 0 || willmore.checkpoint.resume)
-      throw InputError("shape_from_contour cannot write or resume checkpoints "
-                       "yet (the multilevel position is not saved): set "
-                       "<Checkpoint / Interval> = 0 and <Checkpoint / "
-                       "Resume> = false.");
     // a target shape that cannot be made is a mistake in the file: say so
     // before any mesh exists
     if (!target.is_image())

@@ -5,6 +5,7 @@
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/contour_output.h>
 #include <phasefield/problems/contour_problem.h>
+#include <phasefield/time/checkpoint.h>
 
 namespace PhaseField
 {
@@ -18,9 +19,9 @@ namespace PhaseField
     contour_setup(const ContourParameters &parameters)
     {
       typename PhaseFieldProblem<dim>::Setup setup;
-      setup.program_name    = "shape_from_contour";
-      setup.signed_distance = Shapes::create_signed_distance<dim>(
-        parameters.willmore.geometry);
+      setup.program_name = "shape_from_contour";
+      setup.signed_distance =
+        Shapes::create_signed_distance<dim>(parameters.willmore.geometry);
       setup.outer_energy.willmore_weight = parameters.model.willmore_weight;
       setup.outer_energy.area_weight     = parameters.model.area_weight;
       return setup;
@@ -60,8 +61,10 @@ namespace PhaseField
   void
   ContourProblem<dim>::run()
   {
-    create_output_directory(this->prm.output_directory,
-                            this->mpi_communicator);
+    create_output_directory(this->prm.output_directory, this->mpi_communicator);
+    const bool         resume = this->prm.checkpoint.resume;
+    const unsigned int first  = resume ? resumed_level_index() : 0;
+    level_prm                 = parameters.for_level(first);
     this->create_scheme(level_prm);
     this->print_header();
     this->pcout << "levels";
@@ -71,20 +74,21 @@ namespace PhaseField
                 << ", eta = " << parameters.model.area_weight
                 << ", gamma = " << parameters.model.mismatch_weight
                 << std::endl;
-    {
-      TimerOutput::Scope t(this->computing_timer, "mesh: initial");
-      this->discretization.create_mesh(this->setup.signed_distance.get(),
-                                       level_prm.model.epsilon);
-    }
-    {
-      TimerOutput::Scope t(this->computing_timer, "initialisation");
-      this->initialize_fields();
-    }
+    if (!resume)
+      {
+        {
+          TimerOutput::Scope t(this->computing_timer, "mesh: initial");
+          this->discretization.create_mesh(this->setup.signed_distance.get(),
+                                           level_prm.model.epsilon);
+        }
+        TimerOutput::Scope t(this->computing_timer, "initialisation");
+        this->initialize_fields();
+      }
     unsigned int step = 0;
     double       time = 0;
-    for (unsigned int i = 0; i < parameters.multilevel.levels.size(); ++i)
+    for (unsigned int i = first; i < parameters.multilevel.levels.size(); ++i)
       {
-        if (i > 0)
+        if (i > first)
           move_to_level(i);
         start_level(i);
         TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(level_prm),
@@ -93,7 +97,9 @@ namespace PhaseField
                                 *this,
                                 this->pcout,
                                 this->computing_timer);
-        if (i == 0)
+        if (resume && i == first)
+          time_loop.resume(this->solution);
+        else if (i == 0)
           time_loop.run(this->solution);
         else
           time_loop.continue_run(this->solution, step, time);
@@ -103,6 +109,58 @@ namespace PhaseField
       }
     this->computing_timer.print_summary();
     print_peak_memory(this->pcout, this->mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContourProblem<dim>::resumed_level_index() const
+  {
+    const std::string path =
+      Checkpoint::find_last(this->prm.output_directory, this->mpi_communicator);
+    const std::vector<double> data =
+      Checkpoint::read_state(path, this->mpi_communicator).problem_data;
+    if (data.size() < n_level_entries)
+      throw InputError("The checkpoint <" + path +
+                       "> was not written by shape_from_contour (it has no "
+                       "level): <Checkpoint / Resume> needs the output "
+                       "directory of a shape_from_contour run.");
+    const unsigned int               index = static_cast<unsigned int>(data[0]);
+    const unsigned int               level = static_cast<unsigned int>(data[1]);
+    const std::vector<unsigned int> &levels = parameters.multilevel.levels;
+    if (index >= levels.size() || levels[index] != level)
+      throw InputError("The checkpoint <" + path + "> was written on level " +
+                       std::to_string(level) + ", entry " +
+                       std::to_string(index + 1) +
+                       " of <Multilevel / Levels>, which this run's "
+                       "<Multilevel / Levels> does not have there: resume "
+                       "with the levels of the run that wrote it.");
+    return index;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContourProblem<dim>::checkpoint_data() const
+  {
+    std::vector<double> data{double(level_index),
+                             double(level_prm.mesh.finest_level)};
+    data.insert(data.end(), energy_history.begin(), energy_history.end());
+    return data;
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::after_load(BlockVector               &state,
+                                  const std::vector<double> &problem_data)
+  {
+    (void)state;
+    energy_history.assign(problem_data.begin() + n_level_entries,
+                          problem_data.end());
   }
 
 
@@ -182,8 +240,8 @@ namespace PhaseField
   {
     const LumpedOperators<dim> &ops = this->discretization.get_operators();
     Vector                      u(ops.locally_owned_dofs,
-                 ops.locally_relevant_dofs,
-                 this->mpi_communicator);
+             ops.locally_relevant_dofs,
+             this->mpi_communicator);
     u = state.block(0);
     return u;
   }
@@ -290,9 +348,9 @@ namespace PhaseField
     const unsigned int window = parameters.multilevel.window;
     if (energy_history.size() <= window)
       return false;
-    const double now      = energy_history.back();
-    const double decrease = energy_history[energy_history.size() - 1 - window] -
-                            now;
+    const double now = energy_history.back();
+    const double decrease =
+      energy_history[energy_history.size() - 1 - window] - now;
     if (decrease >= parameters.multilevel.tolerance * std::abs(now))
       return false;
     this->pcout << "  total energy decreased by " << decrease << " over "
@@ -333,7 +391,7 @@ namespace PhaseField
   {
     TimerOutput::Scope t(this->computing_timer, "output: labelings");
     const HuffmanLabeling::LabelingGrid<dim> centres(grid->level(), true);
-    ContourOutput::Labelings<dim> labelings{
+    ContourOutput::Labelings<dim>            labelings{
       centres,
       target_on(centres),
       HuffmanLabeling::labeling(this->discretization.get_dof_handler(),

@@ -73,9 +73,11 @@ namespace PhaseField
 
 
   void
-  RestorationProblem::after_load(BlockVector &state)
+  RestorationProblem::after_load(BlockVector               &state,
+                                 const std::vector<double> &problem_data)
   {
     (void)state;
+    (void)problem_data;
     setup_fixed_u();
   }
 

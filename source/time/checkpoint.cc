@@ -75,6 +75,11 @@ namespace PhaseField
             << "pvd_records " << state.pvd_records.size() << '\n';
         for (const auto &[time, file] : state.pvd_records)
           out << time << ' ' << file << '\n';
+        out << "step_offset " << state.step_offset << '\n'
+            << "finished " << state.finished << '\n'
+            << "problem_data " << state.problem_data.size() << '\n';
+        for (const double value : state.problem_data)
+          out << value << '\n';
         return out.str();
       }
 
@@ -96,7 +101,15 @@ namespace PhaseField
             in >> record.first >> record.second;
             state.pvd_records.push_back(record);
           }
-        if (!in || key[0] != "step" || key[4] != "pvd_records")
+        std::string tail_key[3];
+        std::size_t n_data = 0;
+        in >> tail_key[0] >> state.step_offset >> tail_key[1] >>
+          state.finished >> tail_key[2] >> n_data;
+        state.problem_data.resize(in ? n_data : 0);
+        for (double &value : state.problem_data)
+          in >> value;
+        if (!in || key[0] != "step" || key[4] != "pvd_records" ||
+            tail_key[0] != "step_offset" || tail_key[2] != "problem_data")
           throw std::runtime_error("The checkpoint file <" + filename +
                                    "> is damaged.");
         return state;

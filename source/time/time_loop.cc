@@ -183,9 +183,11 @@ namespace PhaseField
     discretization.load(Checkpoint::mesh_filename(path), state);
     discretization.reinit(old_state, saved.n_fields);
     discretization.set_pvd_records(saved.pvd_records);
-    time      = saved.time;
-    state_tau = saved.state_tau;
-    client.after_load(state);
+    time        = saved.time;
+    state_tau   = saved.state_tau;
+    step_offset = saved.step_offset;
+    final_step  = saved.finished ? saved.step : step_offset + n_steps;
+    client.after_load(state, saved.problem_data);
     scheme.reset_solver();
     return saved.step;
   }
@@ -208,10 +210,12 @@ namespace PhaseField
           check_energy_law(step, state, energy_before, tau);
         state_tau = tau;
         time += tau;
-        last_step = step;
+        last_step               = step;
         const Energies energies = record(step, state, report, tau);
-        const bool     finished =
-          step == final_step || client.finished(step, state, energies);
+        // asked after every step, the last one too: the client may keep
+        // a history that a checkpoint of this step holds
+        const bool client_finished = client.finished(step, state, energies);
+        const bool finished        = step == final_step || client_finished;
         // a checkpoint holds the start of the next step: after the last
         // step too, the mesh is adapted for it
         const bool checkpoint = checkpoints > 0 && step % checkpoints == 0;
@@ -219,7 +223,7 @@ namespace PhaseField
             (!finished || checkpoint))
           remesh(state);
         if (checkpoint)
-          write_checkpoint(step, state);
+          write_checkpoint(step, state, finished);
         if (finished)
           break;
       }
@@ -229,15 +233,20 @@ namespace PhaseField
 
   template <int dim>
   void
-  TimeLoop<dim>::write_checkpoint(const unsigned int step, BlockVector &state)
+  TimeLoop<dim>::write_checkpoint(const unsigned int step,
+                                  BlockVector       &state,
+                                  const bool         finished)
   {
     TimerOutput::Scope t(timer, "checkpoint: write");
     Checkpoint::State  saved;
-    saved.step        = step;
-    saved.time        = time;
-    saved.state_tau   = state_tau;
-    saved.n_fields    = state.n_blocks();
-    saved.pvd_records = discretization.get_pvd_records();
+    saved.step         = step;
+    saved.time         = time;
+    saved.state_tau    = state_tau;
+    saved.n_fields     = state.n_blocks();
+    saved.pvd_records  = discretization.get_pvd_records();
+    saved.step_offset  = step_offset;
+    saved.finished     = finished && step != final_step;
+    saved.problem_data = client.checkpoint_data();
     Checkpoint::write(settings.output_directory, discretization, state, saved);
     pcout << "  checkpoint written after step " << step << std::endl;
     // continue from what was written, as a resumed run does: the same

@@ -32,10 +32,12 @@ namespace PhaseField
     /**
      * Append mode (a resumed run): the existing file @p filename must have
      * the header @p columns, with the step in the first column. Its rows
-     * up to step @p last_kept_step are kept, later ones (written by a run
-     * that was killed after its last checkpoint) are dropped, and
-     * add_row() appends. Collective: an error on rank 0 is thrown on
-     * every rank.
+     * up to the first row of step @p last_kept_step are kept, later ones
+     * (written by a run that was killed after its last checkpoint) are
+     * dropped, and add_row() appends. A later row of the same step (the
+     * level-start row of a multilevel run, which repeats the last step of
+     * the previous level) is dropped too: the resumed run writes it
+     * again. Collective: an error on rank 0 is thrown on every rank.
      */
     StatisticsFile(const std::string              &filename,
                    const std::vector<std::string> &columns,

@@ -17,7 +17,8 @@ namespace PhaseField
    * Huffman labeling along the last axis is the given alpha*, minimising
    * the regularisation energy of (6.3),
    *
-   *   eta a_eps[u] + mu (eps/2) ||(v-u)/ttau||^2 + gamma ||alpha* - alpha[u]||^2,
+   *   eta a_eps[u] + mu (eps/2) ||(v-u)/ttau||^2 + gamma ||alpha* -
+   * alpha[u]||^2,
    *
    * by the operator splitting of Algorithm 6.1, one step of size tau:
    *
@@ -82,6 +83,19 @@ namespace PhaseField
              const BlockVector &state,
              const Energies    &energies) override;
 
+    /**
+     * The multilevel position for a checkpoint: the index of the level in
+     * `Multilevel / Levels`, the level, and the total energies of the
+     * level's steps so far (the automatic transition looks back on them).
+     */
+    std::vector<double>
+    checkpoint_data() const override;
+
+    /** The energy history of the level from checkpoint_data(). */
+    void
+    after_load(BlockVector               &state,
+               const std::vector<double> &problem_data) override;
+
     /** level, mismatch_energy, labeling_error, total_energy. */
     std::vector<std::string>
     extra_columns() const override;
@@ -120,6 +134,17 @@ namespace PhaseField
     mismatch(const BlockVector &state) const;
 
   private:
+    /** Entries of checkpoint_data() before the energy history. */
+    static constexpr unsigned int n_level_entries = 2;
+
+    /**
+     * `Checkpoint / Resume`: the index in `Multilevel / Levels` of the
+     * level of the newest checkpoint. Throws InputError if it was not
+     * written by this program or on these levels. Collective.
+     */
+    unsigned int
+    resumed_level_index() const;
+
     /**
      * Set the pixel grid and the target labeling of level number
      * @p index, and the parameters of that level.
@@ -151,7 +176,7 @@ namespace PhaseField
     Vector
     ghosted_u(const BlockVector &state) const;
 
-    const ContourParameters                            &parameters;
+    const ContourParameters &parameters;
     /** The parameters of the current level. */
     WillmoreParameters                                  level_prm;
     unsigned int                                        level_index = 0;

@@ -46,7 +46,8 @@ namespace PhaseField
     after_remesh(BlockVector &state) override;
     /** The fixed DoFs and values on the loaded mesh. */
     void
-    after_load(BlockVector &state) override;
+    after_load(BlockVector               &state,
+               const std::vector<double> &problem_data) override;
 
   private:
     void

@@ -41,6 +41,23 @@ namespace PhaseField
       unsigned int n_fields = 0;
       /** The records of solution.pvd so far (time, file). */
       std::vector<std::pair<double, std::string>> pvd_records;
+      /**
+       * The step before the first step of the run that wrote the
+       * checkpoint (TimeLoop::continue_run(): the levels of a multilevel
+       * schedule continue the step count; 0 otherwise).
+       */
+      unsigned int step_offset = 0;
+      /**
+       * Did that run end with this step before its last one
+       * (TimeLoop::Client::finished(), the automatic level transition)?
+       */
+      bool finished = false;
+      /**
+       * The problem's own state (TimeLoop::Client::checkpoint_data();
+       * shape from contour: the level and the energy history of the
+       * automatic transition).
+       */
+      std::vector<double> problem_data;
     };
 
     /**

@@ -94,14 +94,28 @@ namespace PhaseField
       }
 
       /**
+       * The problem's own state for a checkpoint, beyond mesh and fields
+       * (shape from contour: the level and the energy history of the
+       * automatic transition); after_load() gets it back.
+       */
+      virtual std::vector<double>
+      checkpoint_data() const
+      {
+        return {};
+      }
+
+      /**
        * After a checkpoint was loaded into @p state on a new mesh: rebuild
        * the problem's own data on the mesh (edge restoration: the fixed
-       * DoFs and values), leaving @p state as it is.
+       * DoFs and values) and from the @p problem_data that
+       * checkpoint_data() gave when it was written, leaving @p state as it
+       * is.
        */
       virtual void
-      after_load(BlockVector &state)
+      after_load(BlockVector &state, const std::vector<double> &problem_data)
       {
         (void)state;
+        (void)problem_data;
       }
 
       /**
@@ -171,9 +185,11 @@ namespace PhaseField
      * Instead of run(): load the newest checkpoint of the output directory
      * (on any number of ranks) into @p state on a new mesh, keep the rows
      * of statistics.csv and the .pvd records up to its step k, and run
-     * steps k+1, ..., as the run that wrote it would have. Throws
-     * InputError if there is no checkpoint, or if it has another number of
-     * fields than the scheme.
+     * steps k+1, ..., as the run that wrote it would have (none if that
+     * run ended with step k). The checkpoint may have been written by
+     * continue_run(): its step offset is restored. Throws InputError if
+     * there is no checkpoint, or if it has another number of fields than
+     * the scheme.
      */
     void
     resume(BlockVector &state);
@@ -219,13 +235,15 @@ namespace PhaseField
 
     /**
      * Load the newest checkpoint into @p state and restore time,
-     * state_tau and the .pvd records; returns its step.
+     * state_tau, the step offset, the last step and the .pvd records;
+     * returns its step.
      */
     unsigned int
     load_checkpoint(BlockVector &state);
 
     /**
-     * Write the checkpoint after step @p step, then continue from it as a
+     * Write the checkpoint after step @p step (@p finished: the run ends
+     * with it), then continue from it as a
      * resumed run would (load_checkpoint()): the same mesh in the order
      * of p4est (Discretization::load()), the same state and a fresh solver
      * (TimeSteppingScheme::reset_solver()). Only so are the following
@@ -233,7 +251,9 @@ namespace PhaseField
      * same number of ranks.
      */
     void
-    write_checkpoint(const unsigned int step, BlockVector &state);
+    write_checkpoint(const unsigned int step,
+                     BlockVector       &state,
+                     const bool         finished);
 
     /**
      * Step @p step from old_state into @p state with the step size
