@@ -36,7 +36,7 @@ failures=$(printf '%s\n' "$output" | grep -c "the linear solver failed")
   fail "\"the linear solver failed\" printed $failures times (expected 3)"
 for tau in 0.000488 0.000244; do
   printf '%s\n' "$output" | grep -q \
-    "step 1: Newton failed, retrying with half the time step, tau = $tau" ||
+    "step 1: the solver of the nested scheme did not converge, retrying with half the time step, tau = $tau" ||
     fail "no retry of step 1 with tau = $tau"
 done
 printf '%s\n' "$output" | grep -q "did not converge in step 1 even after halving the time step 2 times" ||

@@ -516,6 +516,7 @@ namespace PhaseField
           << parameters.time.final_time << "):\n";
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       table.write_text(std::cout);
+    print_peak_memory(pcout, comm);
     return results;
   }
 

@@ -20,14 +20,18 @@ namespace PhaseField
       return head;
     }
 
-    /** The message of a step that failed after @p attempt halvings. */
+    /**
+     * The message of a step of the scheme @p scheme_name that failed after
+     * @p attempt halvings.
+     */
     std::string
-    step_failure_message(const unsigned int step,
+    step_failure_message(const std::string &scheme_name,
+                         const unsigned int step,
                          const unsigned int attempt,
                          const double       tau)
     {
-      return "Newton's method did not converge in step " +
-             std::to_string(step) +
+      return "The solver of the " + scheme_name +
+             " scheme did not converge in step " + std::to_string(step) +
              (attempt == 0 ?
                 std::string(" (retrying with smaller time steps is "
                             "switched off: Newton / Maximum step "
@@ -35,9 +39,11 @@ namespace PhaseField
                 " even after halving the time step " + std::to_string(attempt) +
                   " times") +
              " (tau = " + std::to_string(tau) +
-             "). Try a smaller <Time stepping / Tau> or a larger "
-             "<Newton / Maximum iterations>. The statistics and output "
-             "up to the previous step are complete.";
+             "). Try a smaller <Time stepping / Tau> or larger iteration "
+             "limits (<Newton / Maximum iterations>, <Linear solver / "
+             "Maximum iterations>; for the augmented lagrangian scheme the "
+             "limits in subsection <Augmented Lagrangian>). The statistics "
+             "and output up to the previous step are complete.";
     }
   } // namespace
 
@@ -272,11 +278,12 @@ namespace PhaseField
           return report;
         state = saved;
         AssertThrow(attempt < settings.max_step_halvings,
-                    ExcMessage(step_failure_message(step, attempt, tau)));
+                    ExcMessage(
+                      step_failure_message(scheme.name(), step, attempt, tau)));
         tau *= 0.5;
-        pcout << "  step " << step
-              << ": Newton failed, retrying with half the time step, "
-                 "tau = "
+        pcout << "  step " << step << ": the solver of the " << scheme.name()
+              << " scheme did not converge, retrying with half the time "
+                 "step, tau = "
               << tau << std::endl;
       }
   }
