@@ -8,17 +8,21 @@
 //   not) and by 50 by the end of level 5;
 // - the shape grows to the target's width: the inside measure rises from
 //   the initial disc's pi 0.13^2 = 0.053 to more than 0.9 times the
-//   target disc's pi 0.25^2 = 0.196 (the thesis's result is an ellipse stretched along
-//   the view, not the disc: the labeling does not see the depth);
+//   target disc's pi 0.25^2 = 0.196 (the thesis's result is an ellipse
+//   stretched along the view, not the disc: the labeling does not see the
+//   depth);
 // - the Willmore term acts: W falls after the first step (the first
 //   mismatch step makes the interface rough);
 // - the level transition: one row of the transferred state with level 6,
 //   then the steps of level 6, whose mismatch ends below its start;
-// - labeling.csv has one row per pixel centre of level 6.
+// - labeling.csv has one row per pixel centre of level 6, and
+//   labeling_level_6.vtu a line cell between each two of them.
 
 #include "tests.h"
 
 #include <fstream>
+#include <iterator>
+#include <string>
 
 int
 main(int argc, char **argv)
@@ -51,8 +55,7 @@ end
             get(8, "inside_measure") > 0.9 * 0.196)
         << std::endl;
   log() << "W(end of level 5) < W(step 1): "
-        << (get(8, "willmore_energy") < get(1, "willmore_energy"))
-        << std::endl;
+        << (get(8, "willmore_energy") < get(1, "willmore_energy")) << std::endl;
   log() << "transition row: step " << get(9, "step") << ", level "
         << get(9, "level") << "; level 6 mismatch falls: "
         << (get(11, "mismatch_energy") < get(9, "mismatch_energy"))
@@ -65,4 +68,13 @@ end
   while (std::getline(csv, line))
     ++n_lines;
   log() << "labeling.csv rows: " << n_lines << std::endl;
+  // the VTU of the labelings: a line through the 64 pixel centres
+  std::ifstream     vtu("results/labeling_level_6.vtu");
+  const std::string text((std::istreambuf_iterator<char>(vtu)),
+                         std::istreambuf_iterator<char>());
+  log() << "labeling_level_6.vtu has 63 cells and both labelings: "
+        << (text.find("NumberOfCells=\"63\"") != std::string::npos &&
+            text.find("Name=\"alpha_target\"") != std::string::npos &&
+            text.find("Name=\"alpha\"") != std::string::npos)
+        << std::endl;
 }

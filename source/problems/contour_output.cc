@@ -1,6 +1,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
 #include <fstream>
 #include <iomanip>
 #include <phasefield/core/statistics.h>
@@ -23,6 +29,20 @@ namespace PhaseField
       constexpr Colour grid_gray{{200, 200, 200}};
       constexpr Colour target_blue{{0, 60, 255}};
       constexpr Colour current_red{{230, 0, 0}};
+
+      /**
+       * The index i_0 + n i_1 of the pixel (of @p n per direction of
+       * [0,1]) whose centre is @p p.
+       */
+      template <int d>
+      unsigned int
+      pixel_index(const Point<d> &p, const unsigned int n)
+      {
+        unsigned int index = 0, stride = 1;
+        for (unsigned int k = 0; k < d; ++k, stride *= n)
+          index += stride * static_cast<unsigned int>(std::floor(p[k] * n));
+        return index;
+      }
 
       /** An RGB canvas with rows from the bottom. */
       struct Canvas
@@ -139,8 +159,8 @@ namespace PhaseField
               const unsigned int i = (y / scale) * n + x / scale;
               Colour             c = gray(labelings.alpha[i] / top);
               // the line at the upper/right edge of the pixel block
-              const bool edge = (x + 1) % scale == 0 || (y + 1) % scale == 0 ||
-                                scale == 1;
+              const bool edge =
+                (x + 1) % scale == 0 || (y + 1) % scale == 0 || scale == 1;
               for (double level = 1; level < top; level += 2)
                 {
                   if (edge && on_contour(labelings.alpha, n, i, level))
@@ -181,6 +201,62 @@ namespace PhaseField
 
     template <int dim>
     void
+    write_vtu(const Labelings<dim> &labelings,
+              const std::string    &filename,
+              const MPI_Comm        comm)
+    {
+      const HuffmanLabeling::LabelingGrid<dim> &grid = labelings.grid;
+      const unsigned int                        n = grid.pixels_per_direction();
+      AssertThrow(n > 1 && grid.size() == grid.n_pixels_total(),
+                  ExcMessage("The labeling VTU needs one point per pixel "
+                             "and at least two pixels per direction."));
+      run_on_root(comm, [&]() {
+        // the pixel centres as the vertices of a Q1 mesh of the image
+        // plane, embedded in the domain's space at x_dim = 0
+        const double   h = 1.0 / n;
+        Point<dim - 1> first, last;
+        for (unsigned int k = 0; k + 1 < dim; ++k)
+          {
+            first[k] = 0.5 * h;
+            last[k]  = 1 - 0.5 * h;
+          }
+        Triangulation<dim - 1, dim> plane;
+        GridGenerator::subdivided_hyper_rectangle(
+          plane, std::vector<unsigned int>(dim - 1, n - 1), first, last);
+        const FE_Q<dim - 1, dim> fe(1);
+        DoFHandler<dim - 1, dim> dof_handler(plane);
+        dof_handler.distribute_dofs(fe);
+        // pixel (i_0, i_1) has the point index i_0 + n i_1 (x fastest)
+        std::vector<unsigned int> point_of_pixel(grid.size());
+        for (unsigned int i = 0; i < grid.size(); ++i)
+          point_of_pixel[pixel_index(grid.point(i), n)] = i;
+        Vector<double> target(dof_handler.n_dofs()), alpha(target.size());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              Point<dim - 1> p;
+              for (unsigned int k = 0; k + 1 < dim; ++k)
+                p[k] = cell->vertex(v)[k];
+              const unsigned int i   = point_of_pixel[pixel_index(p, n)];
+              const auto         dof = cell->vertex_dof_index(v, 0);
+              target[dof]            = labelings.target[i];
+              alpha[dof]             = labelings.alpha[i];
+            }
+        DataOut<dim - 1, dim> data_out;
+        data_out.attach_dof_handler(dof_handler);
+        data_out.add_data_vector(target, "alpha_target");
+        data_out.add_data_vector(alpha, "alpha");
+        data_out.build_patches();
+        std::ofstream file(filename);
+        AssertThrow(file, ExcMessage("Cannot write <" + filename + ">."));
+        data_out.write_vtu(file);
+      });
+    }
+
+
+
+    template <int dim>
+    void
     write_picture(const Labelings<dim>                &labelings,
                   const Discretization<dim>           &discretization,
                   const TrilinosWrappers::MPI::Vector &u,
@@ -212,6 +288,10 @@ namespace PhaseField
     write_csv(const Labelings<2> &, const std::string &, const MPI_Comm);
     template void
     write_csv(const Labelings<3> &, const std::string &, const MPI_Comm);
+    template void
+    write_vtu(const Labelings<2> &, const std::string &, const MPI_Comm);
+    template void
+    write_vtu(const Labelings<3> &, const std::string &, const MPI_Comm);
     template void
     write_picture(const Labelings<2> &,
                   const Discretization<2> &,

@@ -406,6 +406,9 @@ namespace PhaseField
       ContourOutput::write_csv(labelings,
                                directory + "/labeling.csv",
                                this->mpi_communicator);
+    ContourOutput::write_vtu(labelings,
+                             directory + "/labeling_level_" + level + ".vtu",
+                             this->mpi_communicator);
     ContourOutput::write_picture(labelings,
                                  this->discretization,
                                  this->solution.block(0),

@@ -12,7 +12,7 @@ namespace PhaseField
 {
   /**
    * What shape_from_contour writes at the end of every level beyond
-   * willmore_flow's output: the labelings as CSV and as a picture.
+   * willmore_flow's output: the labelings as CSV, as VTU and as a picture.
    */
   namespace ContourOutput
   {
@@ -38,6 +38,19 @@ namespace PhaseField
               const MPI_Comm        comm);
 
     /**
+     * @p filename: the labelings as a VTU on the image plane, for
+     * ParaView: a Q1 mesh whose vertices are the pixel centres, a line in
+     * 2D (at y = 0) and a plane in 3D (at z = 0), so that it lies under
+     * the domain of solution.pvd, with the point data alpha_target and
+     * alpha. Needs one point per pixel. Written by rank 0; collective.
+     */
+    template <int dim>
+    void
+    write_vtu(const Labelings<dim> &labelings,
+              const std::string    &filename,
+              const MPI_Comm        comm);
+
+    /**
      * The PNG picture @p filename (collective; rank 0 writes).
      * 2D, as thesis Fig. 6.5: the phase field @p u on [0,1]^2 (black
      * inside, white outside), and below it alpha* (blue) and alpha[U]
@@ -49,10 +62,10 @@ namespace PhaseField
      */
     template <int dim>
     void
-    write_picture(const Labelings<dim>                &labelings,
-                  const Discretization<dim>           &discretization,
+    write_picture(const Labelings<dim>                        &labelings,
+                  const Discretization<dim>                   &discretization,
                   const dealii::TrilinosWrappers::MPI::Vector &u,
-                  const std::string                   &filename);
+                  const std::string                           &filename);
   } // namespace ContourOutput
 } // namespace PhaseField
 
