@@ -462,6 +462,7 @@ namespace PhaseField
     c.max_outer_iterations           = prm.max_outer_iterations;
     c.trust_region.max_iterations    = prm.max_trust_region_iterations;
     c.trust_region.max_cg_iterations = prm.max_cg_iterations;
+    c.rol_trust_region               = prm.rol_trust_region;
     return c;
   }
 

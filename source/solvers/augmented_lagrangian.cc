@@ -2,6 +2,7 @@
 #include <cmath>
 #include <iomanip>
 #include <phasefield/solvers/augmented_lagrangian.h>
+#include <phasefield/solvers/rol_trust_region.h>
 
 namespace PhaseField
 {
@@ -139,7 +140,10 @@ namespace PhaseField
         ++report.outer_iterations;
         inner.gradient_tolerance = std::max(w, control.gradient_tolerance);
         AugmentedLagrangianObjective objective(problem, p, lambda);
-        const TrustRegionReport tr = trust_region_minimize(objective, x, inner);
+        const TrustRegionReport      tr =
+          control.rol_trust_region ?
+                 rol_trust_region_minimize(objective, x, inner) :
+                 trust_region_minimize(objective, x, inner);
         report.tr_iterations += tr.iterations;
         report.cg_iterations += tr.cg_iterations;
         report.gradient_norm   = tr.gradient_norm;

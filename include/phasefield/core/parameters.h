@@ -112,8 +112,8 @@ namespace PhaseField
     declare_parameters(dealii::ParameterHandler &prm,
                        const std::string        &extra_shapes        = "",
                        const std::string        &extra_documentation = "",
-                       const std::string        &subsection    = "Geometry",
-                       const std::string        &purpose       = "Initial shape",
+                       const std::string        &subsection = "Geometry",
+                       const std::string        &purpose    = "Initial shape",
                        const std::string        &default_shape = "two circles");
     void
     parse_parameters(dealii::ParameterHandler &prm,
@@ -192,6 +192,8 @@ namespace PhaseField
     unsigned int max_trust_region_iterations = 200;
     /** Limit of the truncated-CG iterations per trust-region step. */
     unsigned int max_cg_iterations = 2000;
+    /** The inner trust-region solver: ours (false) or Trilinos ROL's. */
+    bool rol_trust_region = false;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -97,6 +97,11 @@ namespace PhaseField
     unsigned int max_outer_iterations = 30;
     /** The inner solver (its gradient tolerance is set per iteration). */
     TrustRegionControl trust_region;
+    /**
+     * true: the inner minimisation by Trilinos ROL
+     * (rol_trust_region_minimize()) instead of trust_region_minimize().
+     */
+    bool rol_trust_region = false;
   };
 
   /** What augmented_lagrangian_minimize() did. */
