@@ -290,7 +290,8 @@ namespace Testing
   /**
    * Largest relative difference of @p a and @p b over all rows and all
    * columns but wall_seconds and those in @p ignored (infinite if the
-   * tables differ in shape).
+   * tables differ in shape or an entry is NaN in one table only; NaN in
+   * both counts as equal).
    */
   inline double
   max_relative_difference(const RunResult                &a,
@@ -305,10 +306,15 @@ namespace Testing
           std::find(ignored.begin(), ignored.end(), a.header[j]) ==
             ignored.end())
         for (unsigned int i = 0; i < a.rows.size(); ++i)
-          if (!(std::isnan(a.rows[i][j]) && std::isnan(b.rows[i][j])))
-            max = std::max(max,
-                           std::abs(a.rows[i][j] - b.rows[i][j]) /
-                             std::max(std::abs(a.rows[i][j]), 1e-300));
+          {
+            const double x = a.rows[i][j], y = b.rows[i][j];
+            if (std::isnan(x) && std::isnan(y))
+              continue;
+            if (std::isnan(x) || std::isnan(y))
+              return std::numeric_limits<double>::infinity();
+            max =
+              std::max(max, std::abs(x - y) / std::max(std::abs(x), 1e-300));
+          }
     return max;
   }
 
