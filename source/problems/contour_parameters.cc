@@ -220,6 +220,17 @@ namespace PhaseField
       throw InputError("shape_from_contour needs <Time stepping / Scheme> = "
                        "nested: the Willmore and area weights of its "
                        "regularisation are part of the nested scheme only.");
+    // with the area term the nested Newton system is the 3-field system,
+    // which only the direct solver handles (NestedStep::solve_full_system)
+    const LinearSolverType solver = willmore.linear_solver.type;
+    if (model.area_weight > 0 &&
+        (solver == LinearSolverType::iterative ||
+         (solver == LinearSolverType::automatic && willmore.dimension == 3)))
+      throw InputError(
+        "<Model / Area weight> > 0 makes each Newton system of the nested "
+        "scheme a 3-field system, which only the direct solver handles: set "
+        "<Linear solver / Type> = direct (auto means iterative in 3D) or "
+        "<Model / Area weight> = 0.");
     // a target shape that cannot be made is a mistake in the file: say so
     // before any mesh exists
     if (!target.is_image())
