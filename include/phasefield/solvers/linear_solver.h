@@ -20,7 +20,12 @@ namespace PhaseField
    * `refactorization_threshold` iterations, so the first Newton
    * iteration after a factorisation is an exact solve and later ones (or
    * later time steps on the same mesh) cost a few matrix-vector products.
-   * Call reset() when the mesh changes.
+   * A GMRES solve with an earlier factorisation is given up after
+   * `stale_iteration_limit` iterations, and the matrix is factorised
+   * (GMRES may stagnate on an indefinite matrix). A new factorisation of a
+   * matrix with the sparsity pattern of the previous one reuses MUMPS's
+   * analysis (DirectFactorization::refactorize()). Call reset() when the
+   * mesh changes.
    *
    * Iterative: CG (GMRES for a non-symmetric matrix) with algebraic
    * multigrid (Trilinos ML), memory linear in the unknowns. The nested
@@ -140,11 +145,41 @@ namespace PhaseField
     }
 
   private:
-    const LinearSolverType               solver_type;
-    const double                         relative_tolerance;
-    const unsigned int                   max_iterations;
-    const bool                           symmetric;
-    const unsigned int                   refactorization_threshold;
+    /** GMRES restart length. */
+    static constexpr unsigned int gmres_restart = 50;
+
+    /** Direct type: GMRES preconditioned with a (possibly earlier) LU. */
+    unsigned int
+    solve_direct(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                 dealii::TrilinosWrappers::MPI::Vector        &solution,
+                 const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+
+    /**
+     * Factorise @p matrix, reusing the analysis of the stored
+     * factorisation if the pattern is the same.
+     */
+    void
+    factorize_for_solve(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+
+    /** Right-preconditioned GMRES. */
+    template <typename Preconditioner>
+    void
+    gmres_solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                dealii::TrilinosWrappers::MPI::Vector        &solution,
+                const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+                const Preconditioner                         &preconditioner,
+                dealii::SolverControl                        &control) const;
+
+    const LinearSolverType solver_type;
+    const double           relative_tolerance;
+    const unsigned int     max_iterations;
+    const bool             symmetric;
+    const unsigned int     refactorization_threshold;
+    /**
+     * GMRES iterations allowed with an earlier factorisation before this
+     * matrix is factorised.
+     */
+    const unsigned int                   stale_iteration_limit;
     double                               tolerance;
     std::unique_ptr<DirectFactorization> factorization;
     unsigned int                         last_iterations            = 0;
