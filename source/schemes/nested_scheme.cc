@@ -739,7 +739,14 @@ namespace PhaseField
     , linear_solver(std::make_unique<LinearSolver>(
         LinearSolver::resolve_type(settings.linear_solver.type, dim),
         settings.linear_solver.relative_tolerance,
-        settings.linear_solver.max_iterations))
+        settings.linear_solver.max_iterations,
+        /*symmetric=*/true,
+        settings.outer_energy.has_restoration_terms() ?
+          full_system_refactorization_threshold :
+          LinearSolver::default_refactorization_threshold,
+        settings.outer_energy.has_restoration_terms() ?
+          full_system_refactorization_threshold :
+          0))
     , mesh_matrices(
         std::make_unique<typename NestedStep<dim>::ReducedMatrices>())
   {

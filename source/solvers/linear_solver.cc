@@ -9,25 +9,19 @@ namespace PhaseField
 {
   using namespace dealii;
 
-  namespace
-  {
-    // GMRES with an earlier factorisation is given up after this many
-    // times the refactorisation threshold
-    constexpr unsigned int stale_iterations_per_threshold = 4;
-  } // namespace
-
   LinearSolver::LinearSolver(const LinearSolverType type,
                              const double           relative_tolerance,
                              const unsigned int     max_iterations,
                              const bool             symmetric,
-                             const unsigned int     refactorization_threshold)
+                             const unsigned int     refactorization_threshold,
+                             const unsigned int     stale_iteration_limit)
     : solver_type(type)
     , relative_tolerance(relative_tolerance)
     , max_iterations(max_iterations)
     , symmetric(symmetric)
     , refactorization_threshold(refactorization_threshold)
-    , stale_iteration_limit(stale_iterations_per_threshold *
-                            refactorization_threshold)
+    , stale_iteration_limit(stale_iteration_limit == 0 ? max_iterations :
+                                                         stale_iteration_limit)
     , tolerance(relative_tolerance)
   {
     Assert(type != LinearSolverType::automatic,

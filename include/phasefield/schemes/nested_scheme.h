@@ -461,6 +461,22 @@ namespace PhaseField
     coefficients(const double tau) const;
 
   private:
+    /**
+     * GMRES iterations with an earlier factorisation of the 3-field
+     * Jacobian (restoration terms) after which it is given up and the
+     * Newton matrix is factorised (LinearSolver; GMRES may stagnate on
+     * this indefinite matrix). One MUMPS factorisation of the 3-field
+     * matrix costs as many instructions as about 60 solves with it at
+     * level 6 of Fig. 6.5 (22,000 unknowns; callgrind), so a factorisation
+     * kept for several Newton iterations pays even at 20 GMRES iterations
+     * each; in 2 steps there (21 Newton iterations) a factorisation per
+     * iteration took 40.8e9 instructions, the reduced systems' threshold 8
+     * 28.7e9 (11 factorisations) and 40 23.8e9 (4). With a limit of 80
+     * stagnating solves (Levenberg-Marquardt shifts of edge restoration at
+     * level 9) cost more than the factorisations they were to save.
+     */
+    static constexpr unsigned int full_system_refactorization_threshold = 20;
+
     /** A direct solver with the tolerances of `Linear solver`. */
     std::unique_ptr<LinearSolver>
     make_direct_solver() const;

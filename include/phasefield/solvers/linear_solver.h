@@ -21,9 +21,10 @@ namespace PhaseField
    * iteration after a factorisation is an exact solve and later ones (or
    * later time steps on the same mesh) cost a few matrix-vector products.
    * A GMRES solve with an earlier factorisation is given up after
-   * `stale_iteration_limit` iterations, and the matrix is factorised
-   * (GMRES may stagnate on an indefinite matrix). A new factorisation of a
-   * matrix with the sparsity pattern of the previous one reuses MUMPS's
+   * `stale_iteration_limit` iterations (0: `max_iterations`), and the
+   * matrix is factorised (GMRES may stagnate on an indefinite matrix). For
+   * indefinite matrices (set_pivoting_workspace()), a new factorisation of
+   * a matrix with the sparsity pattern of the previous one reuses MUMPS's
    * analysis (DirectFactorization::refactorize()). Call reset() when the
    * mesh changes.
    *
@@ -36,11 +37,19 @@ namespace PhaseField
   class LinearSolver
   {
   public:
+    /**
+     * GMRES iterations with an earlier factorisation above which the next
+     * solve factorises its matrix (the reduced systems).
+     */
+    static constexpr unsigned int default_refactorization_threshold = 8;
+
     LinearSolver(const LinearSolverType type,
                  const double           relative_tolerance,
                  const unsigned int     max_iterations,
-                 const bool             symmetric                 = true,
-                 const unsigned int     refactorization_threshold = 8);
+                 const bool             symmetric = true,
+                 const unsigned int     refactorization_threshold =
+                   default_refactorization_threshold,
+                 const unsigned int stale_iteration_limit = 0);
     ~LinearSolver();
 
     /** `automatic`: direct (MUMPS) in 2D, iterative in 3D. */
