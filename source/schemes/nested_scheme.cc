@@ -85,16 +85,15 @@ namespace PhaseField
   NestedStep<dim>::NestedStep(const Discretization<dim> &discretization,
                               const NestedCoefficients  &coefficients,
                               const Vector              &old_u,
-                              ReducedMatrices           *constant_matrices)
+                              ReducedMatrices           *mesh_matrices)
     : discretization(discretization)
     , ops(discretization.get_operators())
     , coeff(coefficients)
     , weights(coefficients)
     , old_u(old_u)
-    , constant_matrices(coefficients.double_well ||
-                            coefficients.outer.has_restoration_terms() ?
-                          nullptr :
-                          constant_matrices)
+    , mesh_matrices(mesh_matrices)
+    , constant_jacobian(mesh_matrices != nullptr && !coefficients.double_well &&
+                        !coefficients.outer.has_restoration_terms())
   {}
 
 
@@ -284,20 +283,20 @@ namespace PhaseField
   {
     if (coeff.outer.has_restoration_terms())
       return solve_full_system(z, r, dz, solver, 0.);
-    if (constant_matrices == nullptr)
+    if (!constant_jacobian)
       {
         ReducedMatrices matrices;
         build_reduced_matrices(z, matrices, solver.type());
         return solve_reduced_system(matrices, r, dz, solver);
       }
     // the matrices do not depend on the state: build (and factorise) once
-    if (constant_matrices->k.m() == 0)
+    if (mesh_matrices->k.m() == 0)
       {
-        build_reduced_matrices(z, *constant_matrices, solver.type());
+        build_reduced_matrices(z, *mesh_matrices, solver.type());
         if (solver.type() == LinearSolverType::direct)
-          solver.factorize(constant_matrices->s);
+          solver.factorize(mesh_matrices->s);
       }
-    return solve_reduced_system(*constant_matrices, r, dz, solver);
+    return solve_reduced_system(*mesh_matrices, r, dz, solver);
   }
 
 
@@ -486,7 +485,10 @@ namespace PhaseField
     const double p_scale = a;
     const auto   index   = [](const types::global_dof_index g,
                           const unsigned int field) { return 3 * g + field; };
-    reinit_full_jacobian(j);
+    if (j.m() == 0)
+      reinit_full_jacobian(j);
+    else
+      j = 0;
 
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -529,6 +531,16 @@ namespace PhaseField
 
 
   template <int dim>
+  TrilinosWrappers::SparseMatrix &
+  NestedStep<dim>::full_jacobian_storage(
+    TrilinosWrappers::SparseMatrix &local) const
+  {
+    return mesh_matrices != nullptr ? mesh_matrices->full_jacobian : local;
+  }
+
+
+
+  template <int dim>
   unsigned int
   NestedStep<dim>::solve_full_system(const BlockVector &z,
                                      const BlockVector &r,
@@ -543,10 +555,12 @@ namespace PhaseField
     // delayed pivots of the indefinite 3-field matrix need more workspace
     constexpr unsigned int workspace_percent = 200;
     solver.set_pivoting_workspace(workspace_percent);
-    // a fresh factorisation for every Newton matrix: GMRES preconditioned
-    // with the factorisation of an earlier, indefinite J may stagnate
-    solver.reset();
-    TrilinosWrappers::SparseMatrix j;
+    // The factorisation of an earlier Newton matrix (same mesh) is kept
+    // as GMRES preconditioner while it works; the LinearSolver factorises
+    // this matrix (reusing MUMPS's analysis) when GMRES needs more than a
+    // few iterations with it or stagnates (J is indefinite).
+    TrilinosWrappers::SparseMatrix  local;
+    TrilinosWrappers::SparseMatrix &j = full_jacobian_storage(local);
     assemble_full_jacobian(z, shift, j);
     const MPI_Comm comm = z.block(0).get_mpi_communicator();
     Vector         rhs(j.locally_owned_range_indices(), comm);
@@ -725,8 +739,15 @@ namespace PhaseField
     , linear_solver(std::make_unique<LinearSolver>(
         LinearSolver::resolve_type(settings.linear_solver.type, dim),
         settings.linear_solver.relative_tolerance,
-        settings.linear_solver.max_iterations))
-    , constant_matrices(
+        settings.linear_solver.max_iterations,
+        /*symmetric=*/true,
+        settings.outer_energy.has_restoration_terms() ?
+          full_system_refactorization_threshold :
+          LinearSolver::default_refactorization_threshold,
+        settings.outer_energy.has_restoration_terms() ?
+          full_system_refactorization_threshold :
+          0))
+    , mesh_matrices(
         std::make_unique<typename NestedStep<dim>::ReducedMatrices>())
   {
     // the biharmonic model: the same matrix in every step on a mesh
@@ -846,7 +867,7 @@ namespace PhaseField
     NestedStep<dim>     step(discretization,
                          coefficients(tau),
                          old_state.block(Field::U),
-                         constant_matrices.get());
+                         mesh_matrices.get());
     const NewtonControl control(settings.newton);
     if (!settings.outer_energy.has_restoration_terms())
       return newton_solve(
@@ -869,7 +890,7 @@ namespace PhaseField
   NestedScheme<dim>::reset_solver()
   {
     linear_solver->reset();
-    constant_matrices =
+    mesh_matrices =
       std::make_unique<typename NestedStep<dim>::ReducedMatrices>();
   }
 

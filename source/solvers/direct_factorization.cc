@@ -2,6 +2,7 @@
 #include <Amesos_BaseSolver.h>
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
+#include <deal.II/base/mpi.h>
 #include <phasefield/solvers/direct_factorization.h>
 
 namespace PhaseField
@@ -15,6 +16,7 @@ namespace PhaseField
     , solver(control,
              TrilinosWrappers::SolverDirect::AdditionalData(false,
                                                             "Amesos_Mumps"))
+    , pivoting_workspace_percent(pivoting_workspace_percent)
   {
     factorized_matrix.copy_from(matrix);
     if (pivoting_workspace_percent == 0)
@@ -22,6 +24,20 @@ namespace PhaseField
         solver.initialize(factorized_matrix);
         return;
       }
+    analyze_and_factorize();
+  }
+
+
+
+  DirectFactorization::~DirectFactorization() = default;
+
+
+
+  void
+  DirectFactorization::analyze_and_factorize()
+  {
+    // the solver refers to the problem: release it first
+    indefinite_solver.reset();
     problem = std::make_unique<Epetra_LinearProblem>();
     problem->SetOperator(
       const_cast<Epetra_CrsMatrix *>(&factorized_matrix.trilinos_matrix()));
@@ -32,7 +48,9 @@ namespace PhaseField
     if (auto *mumps = dynamic_cast<Amesos_Mumps *>(indefinite_solver.get()))
       mumps->SetICNTL(14, pivoting_workspace_percent);
     const int symbolic = indefinite_solver->SymbolicFactorization();
-    const int numeric  = indefinite_solver->NumericFactorization();
+    ++analysis_count;
+    const int numeric =
+      symbolic == 0 ? indefinite_solver->NumericFactorization() : 0;
     AssertThrow(symbolic == 0 && numeric == 0,
                 ExcMessage("MUMPS could not factorise the Newton matrix "
                            "(error " +
@@ -42,7 +60,33 @@ namespace PhaseField
 
 
 
-  DirectFactorization::~DirectFactorization() = default;
+  bool
+  DirectFactorization::factorize_numerically()
+  {
+    // collective: MUMPS reports an error on all ranks
+    return indefinite_solver->NumericFactorization() == 0;
+  }
+
+
+
+  void
+  DirectFactorization::refactorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    // copy_from() copies the values into the same Epetra matrix if the
+    // pattern is the same, and replaces the Epetra matrix otherwise
+    Assert(indefinite_solver != nullptr,
+           ExcMessage("refactorize() is for the indefinite (Amesos) path."));
+    const Epetra_CrsMatrix *before = &factorized_matrix.trilinos_matrix();
+    factorized_matrix.copy_from(matrix);
+    const bool same_pattern =
+      dealii::Utilities::MPI::min(
+        &factorized_matrix.trilinos_matrix() == before ? 1 : 0,
+        factorized_matrix.get_mpi_communicator()) == 1;
+    // with the analysis of other values, the pivot order may need more
+    // workspace than MUMPS reserved: analyse again if it fails
+    if (!same_pattern || !factorize_numerically())
+      analyze_and_factorize();
+  }
 
 
 

@@ -13,12 +13,15 @@ namespace PhaseField
                              const double           relative_tolerance,
                              const unsigned int     max_iterations,
                              const bool             symmetric,
-                             const unsigned int     refactorization_threshold)
+                             const unsigned int     refactorization_threshold,
+                             const unsigned int     stale_iteration_limit)
     : solver_type(type)
     , relative_tolerance(relative_tolerance)
     , max_iterations(max_iterations)
     , symmetric(symmetric)
     , refactorization_threshold(refactorization_threshold)
+    , stale_iteration_limit(stale_iteration_limit == 0 ? max_iterations :
+                                                         stale_iteration_limit)
     , tolerance(relative_tolerance)
   {
     Assert(type != LinearSolverType::automatic,
@@ -78,58 +81,91 @@ namespace PhaseField
       }
     if (solver_type == LinearSolverType::direct)
       {
-        const auto refactorize = [&]() {
-          factorization =
-            std::make_unique<DirectFactorization>(matrix,
-                                                  pivoting_workspace_percent);
-          ++factorization_count;
-        };
-        bool fresh = false;
-        if (!factorization || factorization->size() != matrix.m() ||
-            last_iterations > refactorization_threshold)
-          {
-            refactorize();
-            fresh = true;
-          }
-        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-          control,
-          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-            50, /*right_preconditioning=*/true));
-        try
-          {
-            gmres.solve(matrix, solution, rhs, *factorization);
-          }
-        catch (const SolverControl::NoConvergence &)
-          {
-            // the factorisation of an earlier Newton matrix can be too far
-            // from this one to precondition it: factorise this one, once
-            if (fresh)
-              throw;
-            refactorize();
-            solution = 0;
-            gmres.solve(matrix, solution, rhs, *factorization);
-          }
+        last_iterations = solve_direct(matrix, solution, rhs);
+        return last_iterations;
+      }
+    TrilinosWrappers::PreconditionAMG amg;
+    amg.initialize(matrix, multigrid_settings());
+    if (symmetric)
+      {
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        cg.solve(matrix, solution, rhs, amg);
       }
     else
-      {
-        TrilinosWrappers::PreconditionAMG amg;
-        amg.initialize(matrix, multigrid_settings());
-        if (symmetric)
-          {
-            SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-            cg.solve(matrix, solution, rhs, amg);
-          }
-        else
-          {
-            SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-              control,
-              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-                50, /*right_preconditioning=*/true));
-            gmres.solve(matrix, solution, rhs, amg);
-          }
-      }
+      gmres_solve(matrix, solution, rhs, amg, control);
     last_iterations = control.last_step();
     return last_iterations;
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
+                             TrilinosWrappers::MPI::Vector        &solution,
+                             const TrilinosWrappers::MPI::Vector  &rhs)
+  {
+    const double tolerance_norm = tolerance * rhs.l2_norm();
+    const bool fresh = !factorization || factorization->size() != matrix.m() ||
+                       last_iterations > refactorization_threshold;
+    if (fresh)
+      factorize_for_solve(matrix);
+    // an earlier factorisation that preconditions this matrix poorly is
+    // given up after stale_iteration_limit iterations
+    SolverControl control(fresh ?
+                            max_iterations :
+                            std::min(max_iterations, stale_iteration_limit),
+                          tolerance_norm,
+                          false,
+                          false);
+    try
+      {
+        gmres_solve(matrix, solution, rhs, *factorization, control);
+        return control.last_step();
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        if (fresh)
+          throw;
+      }
+    // factorise this matrix, once
+    factorize_for_solve(matrix);
+    SolverControl fresh_control(max_iterations, tolerance_norm, false, false);
+    solution = 0;
+    gmres_solve(matrix, solution, rhs, *factorization, fresh_control);
+    return fresh_control.last_step();
+  }
+
+
+
+  void
+  LinearSolver::factorize_for_solve(
+    const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    if (factorization && factorization->size() == matrix.m() &&
+        pivoting_workspace_percent > 0)
+      factorization->refactorize(matrix);
+    else
+      factorization =
+        std::make_unique<DirectFactorization>(matrix,
+                                              pivoting_workspace_percent);
+    ++factorization_count;
+  }
+
+
+
+  template <typename Preconditioner>
+  void
+  LinearSolver::gmres_solve(const TrilinosWrappers::SparseMatrix &matrix,
+                            TrilinosWrappers::MPI::Vector        &solution,
+                            const TrilinosWrappers::MPI::Vector  &rhs,
+                            const Preconditioner &preconditioner,
+                            SolverControl        &control) const
+  {
+    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+      control,
+      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+        gmres_restart, /*right_preconditioning=*/true));
+    gmres.solve(matrix, solution, rhs, preconditioner);
   }
 
   unsigned int

@@ -165,18 +165,27 @@ namespace PhaseField
       dealii::TrilinosWrappers::SparseMatrix k_hat;
       Vector                                 diagonal;
       dealii::TrilinosWrappers::SparseMatrix g;
+      /**
+       * The assembled 3-field Jacobian (restoration terms): its sparsity
+       * pattern depends on the mesh only, so it is built once per mesh and
+       * only its values are refilled in every Newton iteration (which also
+       * lets the direct solver keep MUMPS's analysis).
+       */
+      dealii::TrilinosWrappers::SparseMatrix full_jacobian;
     };
 
     /**
-     * The step from @p old_u (which must outlive this object). If
-     * @p constant_matrices is given and the Jacobian does not depend on the
-     * state (no double well, no restoration terms), the reduced matrices
-     * are built once into it and reused; the caller keeps it per mesh.
+     * The step from @p old_u (which must outlive this object).
+     * @p mesh_matrices, if given, is storage that the caller keeps per
+     * mesh: if the Jacobian does not depend on the state (no double well,
+     * no restoration terms), the reduced matrices are built once into it
+     * and reused; with restoration terms it holds the 3-field Jacobian,
+     * whose pattern is then built once per mesh.
      */
     NestedStep(const Discretization<dim> &discretization,
                const NestedCoefficients  &coefficients,
                const Vector              &old_u,
-               ReducedMatrices           *constant_matrices = nullptr);
+               ReducedMatrices           *mesh_matrices = nullptr);
 
     /** @name NonlinearSystem */
     /** @{ */
@@ -320,6 +329,13 @@ namespace PhaseField
                            const double                            shift,
                            dealii::TrilinosWrappers::SparseMatrix &j) const;
 
+    /**
+     * The 3-field Jacobian of assemble_full_jacobian(): the one kept in
+     * the per-mesh storage (pattern built at its first use), or @p local.
+     */
+    dealii::TrilinosWrappers::SparseMatrix &
+    full_jacobian_storage(dealii::TrilinosWrappers::SparseMatrix &local) const;
+
     /** The sparsity pattern of assemble_full_jacobian() in @p j. */
     void
     reinit_full_jacobian(dealii::TrilinosWrappers::SparseMatrix &j) const;
@@ -363,7 +379,10 @@ namespace PhaseField
     const NestedCoefficients    coeff;
     const NestedWeights         weights;
     const Vector               &old_u;
-    ReducedMatrices            *constant_matrices;
+    /** Per-mesh storage of the caller (may be nullptr). */
+    ReducedMatrices *mesh_matrices;
+    /** Does the Jacobian not depend on the state (biharmonic model)? */
+    const bool constant_jacobian;
     /** The solver of project_and_energy()'s inner problems. */
     LinearSolver *inner_solver = nullptr;
   };
@@ -442,6 +461,22 @@ namespace PhaseField
     coefficients(const double tau) const;
 
   private:
+    /**
+     * GMRES iterations with an earlier factorisation of the 3-field
+     * Jacobian (restoration terms) after which it is given up and the
+     * Newton matrix is factorised (LinearSolver; GMRES may stagnate on
+     * this indefinite matrix). One MUMPS factorisation of the 3-field
+     * matrix costs as many instructions as about 60 solves with it at
+     * level 6 of Fig. 6.5 (22,000 unknowns; callgrind), so a factorisation
+     * kept for several Newton iterations pays even at 20 GMRES iterations
+     * each; in 2 steps there (21 Newton iterations) a factorisation per
+     * iteration took 40.8e9 instructions, the reduced systems' threshold 8
+     * 28.7e9 (11 factorisations) and 40 23.8e9 (4). With a limit of 80
+     * stagnating solves (Levenberg-Marquardt shifts of edge restoration at
+     * level 9) cost more than the factorisations they were to save.
+     */
+    static constexpr unsigned int full_system_refactorization_threshold = 20;
+
     /** A direct solver with the tolerances of `Linear solver`. */
     std::unique_ptr<LinearSolver>
     make_direct_solver() const;
@@ -450,9 +485,11 @@ namespace PhaseField
     const Discretization<dim>        &discretization;
     const dealii::ConditionalOStream &pcout;
     std::unique_ptr<LinearSolver>     linear_solver;
-    /** Reduced matrices of the biharmonic model, kept per mesh. */
-    std::unique_ptr<typename NestedStep<dim>::ReducedMatrices>
-      constant_matrices;
+    /**
+     * Matrices kept per mesh: the reduced matrices of the biharmonic model,
+     * the 3-field Jacobian with restoration terms.
+     */
+    std::unique_ptr<typename NestedStep<dim>::ReducedMatrices> mesh_matrices;
   };
 } // namespace PhaseField
 

@@ -26,6 +26,17 @@ namespace PhaseField
                         const unsigned int pivoting_workspace_percent);
     ~DirectFactorization();
 
+    /**
+     * Factorise @p matrix instead. If it has the sparsity pattern of the
+     * matrix factorised before (the Newton matrices on one mesh), only its
+     * values are copied and MUMPS's analysis (ordering and symbolic
+     * factorisation) is reused: just the numeric factorisation is
+     * repeated. Only for indefinite matrices (pivoting_workspace_percent
+     * > 0).
+     */
+    void
+    refactorize(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+
     /** dst = A^-1 src. */
     void
     vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
@@ -38,12 +49,29 @@ namespace PhaseField
       return factorized_matrix.m();
     }
 
+    /** Number of MUMPS analyses (symbolic factorisations) so far. */
+    unsigned int
+    n_analyses() const
+    {
+      return analysis_count;
+    }
+
   private:
+    /** Analyse and factorise factorized_matrix (indefinite path). */
+    void
+    analyze_and_factorize();
+
+    /** Factorise factorized_matrix with the analysis kept (indefinite). */
+    bool
+    factorize_numerically();
+
     dealii::TrilinosWrappers::SparseMatrix         factorized_matrix;
     dealii::SolverControl                          control;
     mutable dealii::TrilinosWrappers::SolverDirect solver;
     std::unique_ptr<Epetra_LinearProblem>          problem;
     std::unique_ptr<Amesos_BaseSolver>             indefinite_solver;
+    const unsigned int                             pivoting_workspace_percent;
+    unsigned int                                   analysis_count = 0;
   };
 } // namespace PhaseField
 

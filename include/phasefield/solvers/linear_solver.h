@@ -20,7 +20,13 @@ namespace PhaseField
    * `refactorization_threshold` iterations, so the first Newton
    * iteration after a factorisation is an exact solve and later ones (or
    * later time steps on the same mesh) cost a few matrix-vector products.
-   * Call reset() when the mesh changes.
+   * A GMRES solve with an earlier factorisation is given up after
+   * `stale_iteration_limit` iterations (0: `max_iterations`), and the
+   * matrix is factorised (GMRES may stagnate on an indefinite matrix). For
+   * indefinite matrices (set_pivoting_workspace()), a new factorisation of
+   * a matrix with the sparsity pattern of the previous one reuses MUMPS's
+   * analysis (DirectFactorization::refactorize()). Call reset() when the
+   * mesh changes.
    *
    * Iterative: CG (GMRES for a non-symmetric matrix) with algebraic
    * multigrid (Trilinos ML), memory linear in the unknowns. The nested
@@ -31,11 +37,19 @@ namespace PhaseField
   class LinearSolver
   {
   public:
+    /**
+     * GMRES iterations with an earlier factorisation above which the next
+     * solve factorises its matrix (the reduced systems).
+     */
+    static constexpr unsigned int default_refactorization_threshold = 8;
+
     LinearSolver(const LinearSolverType type,
                  const double           relative_tolerance,
                  const unsigned int     max_iterations,
-                 const bool             symmetric                 = true,
-                 const unsigned int     refactorization_threshold = 8);
+                 const bool             symmetric = true,
+                 const unsigned int     refactorization_threshold =
+                   default_refactorization_threshold,
+                 const unsigned int stale_iteration_limit = 0);
     ~LinearSolver();
 
     /** `automatic`: direct (MUMPS) in 2D, iterative in 3D. */
@@ -140,11 +154,41 @@ namespace PhaseField
     }
 
   private:
-    const LinearSolverType               solver_type;
-    const double                         relative_tolerance;
-    const unsigned int                   max_iterations;
-    const bool                           symmetric;
-    const unsigned int                   refactorization_threshold;
+    /** GMRES restart length. */
+    static constexpr unsigned int gmres_restart = 50;
+
+    /** Direct type: GMRES preconditioned with a (possibly earlier) LU. */
+    unsigned int
+    solve_direct(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                 dealii::TrilinosWrappers::MPI::Vector        &solution,
+                 const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+
+    /**
+     * Factorise @p matrix, reusing the analysis of the stored
+     * factorisation if the pattern is the same.
+     */
+    void
+    factorize_for_solve(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+
+    /** Right-preconditioned GMRES. */
+    template <typename Preconditioner>
+    void
+    gmres_solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                dealii::TrilinosWrappers::MPI::Vector        &solution,
+                const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+                const Preconditioner                         &preconditioner,
+                dealii::SolverControl                        &control) const;
+
+    const LinearSolverType solver_type;
+    const double           relative_tolerance;
+    const unsigned int     max_iterations;
+    const bool             symmetric;
+    const unsigned int     refactorization_threshold;
+    /**
+     * GMRES iterations allowed with an earlier factorisation before this
+     * matrix is factorised.
+     */
+    const unsigned int                   stale_iteration_limit;
     double                               tolerance;
     std::unique_ptr<DirectFactorization> factorization;
     unsigned int                         last_iterations            = 0;
