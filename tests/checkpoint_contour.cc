@@ -16,9 +16,11 @@
 // The statistics.csv rows (all columns but wall_seconds: energies,
 // mismatch, labeling error, iterations) must agree bitwise with the
 // uninterrupted run in serial; the .mpirun=2 variant saves and loads on 2
-// ranks, where all columns but residual_norm (round-off of the parallel
-// direct solver, which differs between two identical runs) must agree to
-// the 10 digits of statistics.csv.
+// ranks, where all columns but residual_norm and linear_iterations
+// (round-off of the parallel direct solver: in two CI runs of the same
+// commit step 4 took 94 and 93 GMRES iterations) must agree to the 10
+// digits of statistics.csv; energies, mismatch and Newton counts stay
+// compared.
 // Resuming with other Multilevel / Levels than the writer's is an
 // InputError.
 
@@ -80,7 +82,7 @@ end
   /**
    * Whether @p resumed agrees with @p reference in all columns but
    * wall_seconds: bitwise in serial (direct solver); on 2 ranks, where two
-   * identical runs already differ in the round-off of residual_norm (the
+   * identical runs already differ in residual_norm and GMRES counts (the
    * parallel direct solver), the other columns to the 10 digits of
    * statistics.csv.
    */
@@ -91,9 +93,9 @@ end
     const bool       serial =
       dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1;
     const double difference =
-      serial ?
-        Testing::max_relative_difference(reference, resumed) :
-        Testing::max_relative_difference(reference, resumed, {"residual_norm"});
+      serial ? Testing::max_relative_difference(reference, resumed) :
+               Testing::max_relative_difference(
+                 reference, resumed, {"residual_norm", "linear_iterations"});
     return difference <= (serial ? 0. : csv_digits_tolerance) ? "yes" : "NO";
   }
 
