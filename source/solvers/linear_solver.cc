@@ -85,7 +85,7 @@ namespace PhaseField
         return last_iterations;
       }
     TrilinosWrappers::PreconditionAMG amg;
-    amg.initialize(matrix, multigrid_settings());
+    initialize_multigrid(amg, matrix);
     if (symmetric)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
