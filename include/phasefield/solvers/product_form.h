@@ -15,26 +15,21 @@
 namespace PhaseField
 {
   /**
-   * Settings of the algebraic multigrid cycles (Trilinos ML) of the
-   * iterative solvers: aggregation for a scalar second-order operator,
-   * three Chebyshev sweeps per level (measured on the 3D cube: two sweeps
-   * need twice the CG iterations, more than three do not pay).
-   */
-  dealii::TrilinosWrappers::PreconditionAMG::AdditionalData
-  multigrid_settings();
-
-  /**
    * Largest coarsest-level matrix of the multigrid hierarchies; ML
    * factorises it (KLU) at every set-up. deal.II's default, 2000, made
    * this factorisation 15% of all instructions of a 3D level-5 cube step
-   * (callgrind); with 200 the step took 8.1 s of CPU time instead of
-   * 11.5 s (2 ranks) and 219 instead of 215 CG iterations.
+   * (callgrind, 1 rank). With 200, that step took 39.9e9 instead of
+   * 46.1e9 instructions (the AMG set-ups 7.8e9 instead of 14.6e9) and 210
+   * instead of 195 CG iterations.
    */
   constexpr unsigned int multigrid_coarse_size = 200;
 
   /**
-   * Set up @p multigrid for @p matrix with multigrid_settings() and
-   * multigrid_coarse_size.
+   * Set up the algebraic multigrid cycles (Trilinos ML) of the iterative
+   * solvers for @p matrix: aggregation for a scalar second-order
+   * operator, three Chebyshev sweeps per level (measured on the 3D cube:
+   * two sweeps need twice the CG iterations, more than three do not pay),
+   * a coarsest level of at most multigrid_coarse_size unknowns.
    */
   void
   initialize_multigrid(dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
