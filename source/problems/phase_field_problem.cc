@@ -13,13 +13,11 @@ namespace PhaseField
     template <int dim>
     typename Discretization<dim>::Settings
     discretization_settings(const MeshParameters &mesh,
-                            const double          coarsening_band_factor,
-                            const bool            refine_unrefined_islands)
+                            const double          coarsening_band_factor)
     {
       typename Discretization<dim>::Settings settings;
-      settings.mesh                     = mesh;
-      settings.coarsening_band_factor   = coarsening_band_factor;
-      settings.refine_unrefined_islands = refine_unrefined_islands;
+      settings.mesh                   = mesh;
+      settings.coarsening_band_factor = coarsening_band_factor;
       return settings;
     }
   } // namespace
@@ -38,11 +36,9 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , discretization(
-        discretization_settings<dim>(parameters.mesh,
-                                     setup.coarsening_band_factor,
-                                     setup.refine_unrefined_islands),
-        mpi_communicator)
+    , discretization(discretization_settings<dim>(parameters.mesh,
+                                                  setup.coarsening_band_factor),
+                     mpi_communicator)
   {}
 
 

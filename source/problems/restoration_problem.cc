@@ -31,8 +31,6 @@ namespace PhaseField
                                      restoration.damage);
       setup.outer_energy.area_weight = restoration.eta;
       setup.outer_energy.fixed_u     = &fixed_u_dofs;
-      // a stationary restored edge must not make the mesh alternate
-      setup.refine_unrefined_islands = false;
       // coarsen only where 1 - |U| < 1 - tanh(6) = 1.2e-5 (Band width 4):
       // the energy then changes by about 1e-10 at a re-meshing, not 1e-7
       constexpr double coarsening_band_factor = 1.5;

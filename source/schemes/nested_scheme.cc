@@ -336,11 +336,12 @@ namespace PhaseField
     else
       {
         // G = gamma M + sqrt((1+a)/b) Khat, so that b G M^-1 G / gamma^2
-        // approximates S (see schur_mass_shift)
+        // approximates S, with gamma = schur_mass_shift + scale c (see
+        // there)
         const double scale  = std::sqrt((1 + a) / b);
         Vector       weight = k_weights(v, b);
         weight *= scale;
-        weight.add(schur_mass_shift);
+        weight.add(schur_mass_shift + scale * weights.c);
         ops.stiffness_plus_weighted_mass(scale * weights.inner_tau,
                                          weight,
                                          matrices.g);

@@ -60,14 +60,6 @@ namespace PhaseField
        * changes the discrete energy at every re-meshing.
        */
       double coarsening_band_factor = 1;
-      /**
-       * Keep deal.II's mesh smoothing eliminate_unrefined_islands (refine
-       * a coarse cell surrounded by finer ones). With narrow-band
-       * coarsening far from the interface it can undo the coarsening of
-       * the previous re-meshing, so that a stationary interface makes the
-       * mesh alternate between two meshes.
-       */
-      bool               refine_unrefined_islands = true;
       BoundaryConditions boundary_conditions      = BoundaryConditions::natural;
     };
 

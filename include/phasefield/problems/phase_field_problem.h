@@ -64,8 +64,7 @@ namespace PhaseField
       /** Weights and fixed values of the outer energy. */
       OuterEnergy outer_energy;
       /** Narrow-band hysteresis (Discretization::Settings). */
-      double coarsening_band_factor   = 1;
-      bool   refine_unrefined_islands = true;
+      double coarsening_band_factor = 1;
     };
 
   protected:

@@ -365,12 +365,19 @@ namespace PhaseField
 
     /**
      * The preconditioner of the iterative solver uses
-     * G = gamma M + sqrt((1+a)/b) Khat with this gamma. Khat is indefinite
-     * near the interface (Psi'' < 0 there), and gamma = 1 can make G nearly
-     * singular; a larger gamma keeps G definite at the price of a weaker
-     * approximation of S. Measured on the 3D cube at level 6 (first step,
-     * 10 Newton iterations, 2 ranks): 398 / 363 / 331 / 392 CG iterations
-     * in all for gamma = 1 / 2 / 4 / 8.
+     * G = gamma M + s Khat, s = sqrt((1+a)/b), with
+     * gamma = schur_mass_shift + s c. The nodal mass weight of Khat,
+     * 1 - b + c Psi''(V), is negative near the interface (Psi'' >= -1
+     * there), down to about -c since b is close to 1. The term s c keeps
+     * every nodal mass weight of G at least schur_mass_shift: with a fixed
+     * gamma = 4 the smallest weight, 4 - s c, is 3.0 / 1.2 / -3.8 at
+     * levels 5 / 6 / 7 (eps = 4h, tau = 0.03h, ttau = h^2, s c grows like
+     * h^-1.5), and the level-7 sphere's first step took 398 CG iterations
+     * (4 Newton iterations, 2 ranks) instead of 281 with this gamma (298
+     * with gamma = 8.8, 292 with 15.7). At level 6 the shift costs a
+     * little: 144 instead of 136 (sphere), 363 instead of 331 (cube).
+     * Fixed gamma on the level-6 cube: 398 / 363 / 331 / 392 CG
+     * iterations for gamma = 1 / 2 / 4 / 8.
      */
     static constexpr double schur_mass_shift = 4;
 
