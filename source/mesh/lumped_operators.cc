@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <algorithm>
 #include <phasefield/mesh/lumped_operators.h>
 
 namespace PhaseField
@@ -36,6 +37,27 @@ namespace PhaseField
     set_inverse_lumped_mass(constraints,
                             Utilities::MPI::min(min_cell_mass,
                                                 mpi_communicator));
+    set_stiffness_diagonal();
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::set_stiffness_diagonal()
+  {
+    const Epetra_CrsMatrix &l    = stiffness.trilinos_matrix();
+    const CompressedRows    rows = compressed_rows(stiffness);
+    stiffness_diagonal.resize(l.NumMyRows());
+    for (int row = 0; row < l.NumMyRows(); ++row)
+      {
+        const int *begin = rows.columns + rows.offsets[row];
+        const int *end   = rows.columns + rows.offsets[row + 1];
+        const int *found = std::find(begin, end, l.LCID(l.GRID(row)));
+        AssertThrow(found != end,
+                    ExcMessage("The stiffness matrix lacks a diagonal entry."));
+        stiffness_diagonal[row] = static_cast<int>(found - rows.columns);
+      }
   }
 
 
@@ -131,11 +153,16 @@ namespace PhaseField
     const TrilinosWrappers::MPI::Vector &nodal_weight,
     TrilinosWrappers::SparseMatrix      &matrix) const
   {
-    matrix.copy_from(stiffness);
-    matrix *= stiffness_factor;
-    TrilinosWrappers::MPI::Vector weighted_mass(nodal_weight);
-    weighted_mass.scale(lumped_mass);
-    add_to_diagonal(weighted_mass, matrix);
+    if (!share_pattern(matrix, stiffness))
+      matrix.copy_from(stiffness);
+    const CompressedRows l   = compressed_rows(stiffness);
+    const CompressedRows out = compressed_rows(matrix);
+    const unsigned int   n   = nodal_weight.locally_owned_size();
+    for (int k = 0; k < l.offsets[n]; ++k)
+      out.values[k] = stiffness_factor * l.values[k];
+    for (unsigned int i = 0; i < n; ++i)
+      out.values[stiffness_diagonal[i]] +=
+        lumped_mass.begin()[i] * nodal_weight.begin()[i];
   }
 
 
@@ -209,6 +236,36 @@ namespace PhaseField
       s += m_inv[i] * r.begin()[i] * r.begin()[i];
     return std::sqrt(
       Utilities::MPI::sum(s, lumped_mass.get_mpi_communicator()));
+  }
+
+
+
+  CompressedRows
+  compressed_rows(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    CompressedRows rows;
+    const int      error = matrix.trilinos_matrix().ExtractCrsDataPointers(
+      rows.offsets, rows.columns, rows.values);
+    AssertThrow(error == 0,
+                ExcMessage("The matrix is not compressed with optimised "
+                           "storage."));
+    return rows;
+  }
+
+
+
+  bool
+  share_pattern(const TrilinosWrappers::SparseMatrix &a,
+                const TrilinosWrappers::SparseMatrix &b)
+  {
+    CompressedRows rows_a, rows_b;
+    return a.trilinos_matrix().ExtractCrsDataPointers(rows_a.offsets,
+                                                      rows_a.columns,
+                                                      rows_a.values) == 0 &&
+           b.trilinos_matrix().ExtractCrsDataPointers(rows_b.offsets,
+                                                      rows_b.columns,
+                                                      rows_b.values) == 0 &&
+           rows_a.columns == rows_b.columns && rows_a.offsets == rows_b.offsets;
   }
 
 

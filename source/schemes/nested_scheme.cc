@@ -283,20 +283,18 @@ namespace PhaseField
   {
     if (coeff.outer.has_restoration_terms())
       return solve_full_system(z, r, dz, solver, 0.);
-    if (!constant_jacobian)
+    ReducedMatrices  local;
+    ReducedMatrices &matrices =
+      mesh_matrices != nullptr ? *mesh_matrices : local;
+    // if the matrices do not depend on the state: build (and factorise)
+    // them once
+    if (!constant_jacobian || matrices.k.m() == 0)
       {
-        ReducedMatrices matrices;
         build_reduced_matrices(z, matrices, solver.type());
-        return solve_reduced_system(matrices, r, dz, solver);
+        if (constant_jacobian && solver.type() == LinearSolverType::direct)
+          solver.factorize(matrices.s);
       }
-    // the matrices do not depend on the state: build (and factorise) once
-    if (mesh_matrices->k.m() == 0)
-      {
-        build_reduced_matrices(z, *mesh_matrices, solver.type());
-        if (solver.type() == LinearSolverType::direct)
-          solver.factorize(mesh_matrices->s);
-      }
-    return solve_reduced_system(*mesh_matrices, r, dz, solver);
+    return solve_reduced_system(matrices, r, dz, solver);
   }
 
 
@@ -314,7 +312,6 @@ namespace PhaseField
     const Vector &p = z.block(Field::P);
 
     build_k(v, 0., matrices.k);
-    build_k(v, b, matrices.k_hat);
 
     // the diagonal part of S: b M + E
     Vector &diagonal = matrices.diagonal;
@@ -326,15 +323,16 @@ namespace PhaseField
 
     if (type == LinearSolverType::direct)
       {
-        // S = (1+a) Khat M^-1 Khat + b M + E
-        TrilinosWrappers::SparseMatrix &s = matrices.s;
-        Vector                          weight(ops.inverse_lumped_mass);
-        weight *= (1 + a);
-        matrices.k_hat.mmult(s, matrices.k_hat, weight);
-        ops.add_to_diagonal(diagonal, s);
+        // S = (1+a) Khat M^-1 Khat + b M + E, Khat = ttau L + M[k(V) - b]
+        if (!matrices.stiffness_square)
+          matrices.stiffness_square =
+            std::make_unique<StiffnessSquare<dim>>(ops);
+        matrices.stiffness_square->assemble(
+          1 + a, weights.inner_tau, k_weights(v, b), diagonal, matrices.s);
       }
     else
       {
+        build_k(v, b, matrices.k_hat);
         // G = gamma M + sqrt((1+a)/b) Khat, so that b G M^-1 G / gamma^2
         // approximates S, with gamma = schur_mass_shift + scale c (see
         // there)

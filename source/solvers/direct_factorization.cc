@@ -12,18 +12,9 @@ namespace PhaseField
   DirectFactorization::DirectFactorization(
     const TrilinosWrappers::SparseMatrix &matrix,
     const unsigned int                    pivoting_workspace_percent)
-    : control(1, 0)
-    , solver(control,
-             TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                            "Amesos_Mumps"))
-    , pivoting_workspace_percent(pivoting_workspace_percent)
+    : pivoting_workspace_percent(pivoting_workspace_percent)
   {
     factorized_matrix.copy_from(matrix);
-    if (pivoting_workspace_percent == 0)
-      {
-        solver.initialize(factorized_matrix);
-        return;
-      }
     analyze_and_factorize();
   }
 
@@ -37,20 +28,19 @@ namespace PhaseField
   DirectFactorization::analyze_and_factorize()
   {
     // the solver refers to the problem: release it first
-    indefinite_solver.reset();
+    solver.reset();
     problem = std::make_unique<Epetra_LinearProblem>();
     problem->SetOperator(
       const_cast<Epetra_CrsMatrix *>(&factorized_matrix.trilinos_matrix()));
     Amesos factory;
-    indefinite_solver.reset(factory.Create("Amesos_Mumps", *problem));
-    AssertThrow(indefinite_solver != nullptr,
-                ExcMessage("Trilinos Amesos has no MUMPS."));
-    if (auto *mumps = dynamic_cast<Amesos_Mumps *>(indefinite_solver.get()))
+    solver.reset(factory.Create("Amesos_Mumps", *problem));
+    AssertThrow(solver != nullptr, ExcMessage("Trilinos Amesos has no MUMPS."));
+    auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get());
+    if (mumps != nullptr && pivoting_workspace_percent > 0)
       mumps->SetICNTL(14, pivoting_workspace_percent);
-    const int symbolic = indefinite_solver->SymbolicFactorization();
+    const int symbolic = solver->SymbolicFactorization();
     ++analysis_count;
-    const int numeric =
-      symbolic == 0 ? indefinite_solver->NumericFactorization() : 0;
+    const int numeric  = symbolic == 0 ? solver->NumericFactorization() : 0;
     AssertThrow(symbolic == 0 && numeric == 0,
                 ExcMessage("MUMPS could not factorise the Newton matrix "
                            "(error " +
@@ -64,7 +54,7 @@ namespace PhaseField
   DirectFactorization::factorize_numerically()
   {
     // collective: MUMPS reports an error on all ranks
-    return indefinite_solver->NumericFactorization() == 0;
+    return solver->NumericFactorization() == 0;
   }
 
 
@@ -74,8 +64,6 @@ namespace PhaseField
   {
     // copy_from() copies the values into the same Epetra matrix if the
     // pattern is the same, and replaces the Epetra matrix otherwise
-    Assert(indefinite_solver != nullptr,
-           ExcMessage("refactorize() is for the indefinite (Amesos) path."));
     const Epetra_CrsMatrix *before = &factorized_matrix.trilinos_matrix();
     factorized_matrix.copy_from(matrix);
     const bool same_pattern =
@@ -94,14 +82,9 @@ namespace PhaseField
   DirectFactorization::vmult(TrilinosWrappers::MPI::Vector       &dst,
                              const TrilinosWrappers::MPI::Vector &src) const
   {
-    if (!indefinite_solver)
-      {
-        solver.solve(dst, src);
-        return;
-      }
     problem->SetLHS(&dst.trilinos_vector());
     problem->SetRHS(const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));
-    AssertThrow(indefinite_solver->Solve() == 0,
+    AssertThrow(solver->Solve() == 0,
                 ExcMessage("MUMPS failed to solve the Newton system."));
   }
 } // namespace PhaseField

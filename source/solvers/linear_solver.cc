@@ -141,8 +141,7 @@ namespace PhaseField
   LinearSolver::factorize_for_solve(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    if (factorization && factorization->size() == matrix.m() &&
-        pivoting_workspace_percent > 0)
+    if (factorization && factorization->size() == matrix.m())
       factorization->refactorize(matrix);
     else
       factorization =

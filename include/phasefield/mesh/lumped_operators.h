@@ -58,12 +58,20 @@ namespace PhaseField
     /** Local indices (into the locally owned range) of constrained DoFs. */
     std::vector<unsigned int> constrained_local_indices;
 
+    /**
+     * For every locally owned row of the stiffness matrix, the index of
+     * its diagonal entry in compressed_rows(stiffness).values.
+     */
+    std::vector<int> stiffness_diagonal;
+
     dealii::IndexSet locally_owned_dofs;
     dealii::IndexSet locally_relevant_dofs;
 
     /**
      * @p matrix = @p stiffness_factor L + M[@p nodal_weight], i.e. the
-     * stiffness matrix plus the lumped mass weighted nodally.
+     * stiffness matrix plus the lumped mass weighted nodally. If @p matrix
+     * shares the pattern of L (an earlier result), only its values are
+     * written.
      */
     void
     stiffness_plus_weighted_mass(
@@ -115,7 +123,40 @@ namespace PhaseField
     set_inverse_lumped_mass(
       const dealii::AffineConstraints<double> &constraints,
       const double                             min_cell_mass);
+
+    /** stiffness_diagonal of the assembled stiffness matrix. */
+    void
+    set_stiffness_diagonal();
   };
+  /**
+   * Epetra's compressed row storage of the locally owned rows of a
+   * compressed matrix: the entries of local row i are offsets[i], ...,
+   * offsets[i+1] - 1, with local column indices and values. Writing to
+   * values changes the matrix (no compress() needed).
+   */
+  struct CompressedRows
+  {
+    int    *offsets = nullptr;
+    int    *columns = nullptr;
+    double *values  = nullptr;
+  };
+
+  /**
+   * The compressed rows of @p matrix, which must be compressed with
+   * optimised storage (as deal.II compresses).
+   */
+  CompressedRows
+  compressed_rows(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+
+  /**
+   * Do @p a and @p b share one sparsity pattern (one Epetra graph, as after
+   * a.copy_from(b) with a different pattern before)? Then their values
+   * correspond entry by entry.
+   */
+  bool
+  share_pattern(const dealii::TrilinosWrappers::SparseMatrix &a,
+                const dealii::TrilinosWrappers::SparseMatrix &b);
+
   /**
    * Call @p f(column, value) for every stored entry of the locally owned
    * row @p row of @p matrix (global indices), through Epetra's view of the

@@ -10,6 +10,7 @@
 #include <phasefield/core/constants.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
+#include <phasefield/mesh/stiffness_square.h>
 #include <phasefield/schemes/double_well.h>
 #include <phasefield/schemes/outer_energy.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
@@ -161,6 +162,8 @@ namespace PhaseField
       dealii::TrilinosWrappers::SparseMatrix k;
       /** S assembled (only for the direct solver). */
       dealii::TrilinosWrappers::SparseMatrix s;
+      /** L M^-1 L, from which S is assembled (direct solver). */
+      std::unique_ptr<StiffnessSquare<dim>> stiffness_square;
       /** Product form of S (iterative solver): Khat, diag b M + E, G. */
       dealii::TrilinosWrappers::SparseMatrix k_hat;
       Vector                                 diagonal;
@@ -177,10 +180,13 @@ namespace PhaseField
     /**
      * The step from @p old_u (which must outlive this object).
      * @p mesh_matrices, if given, is storage that the caller keeps per
-     * mesh: if the Jacobian does not depend on the state (no double well,
-     * no restoration terms), the reduced matrices are built once into it
-     * and reused; with restoration terms it holds the 3-field Jacobian,
-     * whose pattern is then built once per mesh.
+     * mesh: the reduced matrices are built into it, so that their
+     * sparsity patterns (and L M^-1 L) are built once per mesh and only
+     * their values in every Newton iteration; if the Jacobian does not
+     * depend on the state (no double well, no restoration terms), the
+     * reduced matrices are built once and reused; with restoration terms
+     * it holds the 3-field Jacobian, whose pattern is then built once per
+     * mesh.
      */
     NestedStep(const Discretization<dim> &discretization,
                const NestedCoefficients  &coefficients,

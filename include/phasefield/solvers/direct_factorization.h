@@ -1,8 +1,6 @@
 #ifndef phasefield_solvers_direct_factorization_h
 #define phasefield_solvers_direct_factorization_h
 
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <memory>
@@ -16,8 +14,8 @@ namespace PhaseField
    * A copy of a sparse matrix and its LU factorisation by MUMPS (through
    * Trilinos Amesos), usable as a preconditioner (vmult() applies the
    * inverse). For indefinite matrices (pivoting_workspace_percent > 0)
-   * MUMPS is called through Amesos directly, with that much extra
-   * workspace (ICNTL(14)) for the fill-in of delayed pivots.
+   * MUMPS gets that much extra workspace (ICNTL(14)) for the fill-in of
+   * delayed pivots.
    */
   class DirectFactorization
   {
@@ -31,8 +29,7 @@ namespace PhaseField
      * matrix factorised before (the Newton matrices on one mesh), only its
      * values are copied and MUMPS's analysis (ordering and symbolic
      * factorisation) is reused: just the numeric factorisation is
-     * repeated. Only for indefinite matrices (pivoting_workspace_percent
-     * > 0).
+     * repeated.
      */
     void
     refactorize(const dealii::TrilinosWrappers::SparseMatrix &matrix);
@@ -57,21 +54,19 @@ namespace PhaseField
     }
 
   private:
-    /** Analyse and factorise factorized_matrix (indefinite path). */
+    /** Analyse and factorise factorized_matrix. */
     void
     analyze_and_factorize();
 
-    /** Factorise factorized_matrix with the analysis kept (indefinite). */
+    /** Factorise factorized_matrix with the analysis kept. */
     bool
     factorize_numerically();
 
-    dealii::TrilinosWrappers::SparseMatrix         factorized_matrix;
-    dealii::SolverControl                          control;
-    mutable dealii::TrilinosWrappers::SolverDirect solver;
-    std::unique_ptr<Epetra_LinearProblem>          problem;
-    std::unique_ptr<Amesos_BaseSolver>             indefinite_solver;
-    const unsigned int                             pivoting_workspace_percent;
-    unsigned int                                   analysis_count = 0;
+    dealii::TrilinosWrappers::SparseMatrix factorized_matrix;
+    std::unique_ptr<Epetra_LinearProblem>  problem;
+    std::unique_ptr<Amesos_BaseSolver>     solver;
+    const unsigned int                     pivoting_workspace_percent;
+    unsigned int                           analysis_count = 0;
   };
 } // namespace PhaseField
 

@@ -1,6 +1,7 @@
 #ifndef phasefield_solvers_linear_solver_h
 #define phasefield_solvers_linear_solver_h
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <memory>
@@ -22,11 +23,10 @@ namespace PhaseField
    * later time steps on the same mesh) cost a few matrix-vector products.
    * A GMRES solve with an earlier factorisation is given up after
    * `stale_iteration_limit` iterations (0: `max_iterations`), and the
-   * matrix is factorised (GMRES may stagnate on an indefinite matrix). For
-   * indefinite matrices (set_pivoting_workspace()), a new factorisation of
-   * a matrix with the sparsity pattern of the previous one reuses MUMPS's
-   * analysis (DirectFactorization::refactorize()). Call reset() when the
-   * mesh changes.
+   * matrix is factorised (GMRES may stagnate on an indefinite matrix). A
+   * new factorisation of a matrix with the sparsity pattern of the
+   * previous one reuses MUMPS's analysis (DirectFactorization::
+   * refactorize()). Call reset() when the mesh changes.
    *
    * Iterative: CG (GMRES for a non-symmetric matrix) with algebraic
    * multigrid (Trilinos ML), memory linear in the unknowns. The nested
