@@ -3,7 +3,7 @@
 # A linear-solver failure halves the time step instead of aborting the run
 # (doc/willmore_flow.md, "Newton's method"). The iterative solver limited
 # to 10 iterations fails in the second Newton iteration of the outer
-# problem (which needs 18 CG iterations here) but not in the inner problem
+# problem (which needs 17 CG iterations here) but not in the inner problem
 # for V at step 0 (a limit of 6 makes that one fail; with a coarsest
 # multigrid level of at most 200 unknowns, the AMG of this 2D level-5 mesh
 # is no longer a direct solve): step 1 must be tried

@@ -334,12 +334,15 @@ namespace PhaseField
       {
         build_k(v, b, matrices.k_hat);
         // G = gamma M + sqrt((1+a)/b) Khat, so that b G M^-1 G / gamma^2
-        // approximates S, with gamma = schur_mass_shift + scale c (see
-        // there)
+        // approximates S, with gamma = schur_mass_shift, and the
+        // interface translation mode 1 - V^2 for its multigrid
         const double scale  = std::sqrt((1 + a) / b);
         Vector       weight = k_weights(v, b);
         weight *= scale;
-        weight.add(schur_mass_shift + scale * weights.c);
+        weight.add(schur_mass_shift);
+        matrices.interface_mode.reinit(v, true);
+        for (unsigned int i = 0; i < n; ++i)
+          matrices.interface_mode.begin()[i] = 1 - v.begin()[i] * v.begin()[i];
         ops.stiffness_plus_weighted_mass(scale * weights.inner_tau,
                                          weight,
                                          matrices.g);
@@ -386,7 +389,8 @@ namespace PhaseField
                                   ops.lumped_mass,
                                   ops.inverse_lumped_mass,
                                   dv,
-                                  rhs);
+                                  rhs,
+                                  &matrices.interface_mode);
     ops.zero_constrained(dv);
 
     // dU = M^-1 (K dV + R_P)

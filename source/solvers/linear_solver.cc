@@ -176,11 +176,12 @@ namespace PhaseField
     const TrilinosWrappers::MPI::Vector  &mass,
     const TrilinosWrappers::MPI::Vector  &inverse_mass,
     TrilinosWrappers::MPI::Vector        &solution,
-    const TrilinosWrappers::MPI::Vector  &rhs)
+    const TrilinosWrappers::MPI::Vector  &rhs,
+    const TrilinosWrappers::MPI::Vector  *interface_mode)
   {
     Assert(solver_type == LinearSolverType::iterative, ExcInternalError());
     const ProductFormMatrix   s(k_hat, w, d, inverse_mass);
-    const SchurPreconditioner preconditioner(g, mass);
+    const SchurPreconditioner preconditioner(g, mass, interface_mode);
     ++factorization_count;
     SolverControl                           control(max_iterations,
                           tolerance * rhs.l2_norm(),

@@ -1,12 +1,16 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 #include <phasefield/solvers/product_form.h>
+#include <vector>
 
 namespace PhaseField
 {
   void
-  initialize_multigrid(dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
-                       const dealii::TrilinosWrappers::SparseMatrix &matrix)
+  initialize_multigrid(
+    dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
+    const dealii::TrilinosWrappers::SparseMatrix &matrix,
+    const dealii::TrilinosWrappers::MPI::Vector  *interface_mode)
   {
     dealii::TrilinosWrappers::PreconditionAMG::AdditionalData settings;
     settings.elliptic              = true;
@@ -18,6 +22,21 @@ namespace PhaseField
     std::unique_ptr<Epetra_MultiVector> constant_modes;
     settings.set_parameters(parameters, constant_modes, matrix);
     parameters.set("coarse: max size", static_cast<int>(multigrid_coarse_size));
+    // near null space {1, interface mode}, column by column (ML copies it
+    // during the set-up)
+    std::vector<double> modes;
+    if (interface_mode != nullptr)
+      {
+        const unsigned int n = interface_mode->locally_owned_size();
+        modes.assign(2 * n, 1.);
+        std::copy(interface_mode->begin(),
+                  interface_mode->end(),
+                  modes.begin() + n);
+        parameters.set("null space: type", "pre-computed");
+        parameters.set("null space: dimension", 2);
+        parameters.set("null space: vectors", modes.data());
+        parameters.set("null space: add default vectors", false);
+      }
     multigrid.initialize(matrix, parameters);
   }
 } // namespace PhaseField

@@ -168,6 +168,8 @@ namespace PhaseField
       dealii::TrilinosWrappers::SparseMatrix k_hat;
       Vector                                 diagonal;
       dealii::TrilinosWrappers::SparseMatrix g;
+      /** 1 - V^2, the near kernel of G (SchurPreconditioner). */
+      Vector interface_mode;
       /**
        * The assembled 3-field Jacobian (restoration terms): its sparsity
        * pattern depends on the mesh only, so it is built once per mesh and
@@ -371,19 +373,18 @@ namespace PhaseField
 
     /**
      * The preconditioner of the iterative solver uses
-     * G = gamma M + s Khat, s = sqrt((1+a)/b), with
-     * gamma = schur_mass_shift + s c. The nodal mass weight of Khat,
-     * 1 - b + c Psi''(V), is negative near the interface (Psi'' >= -1
-     * there), down to about -c since b is close to 1. The term s c keeps
-     * every nodal mass weight of G at least schur_mass_shift: with a fixed
-     * gamma = 4 the smallest weight, 4 - s c, is 3.0 / 1.2 / -3.8 at
-     * levels 5 / 6 / 7 (eps = 4h, tau = 0.03h, ttau = h^2, s c grows like
-     * h^-1.5), and the level-7 sphere's first step took 398 CG iterations
-     * (4 Newton iterations, 2 ranks) instead of 281 with this gamma (298
-     * with gamma = 8.8, 292 with 15.7). At level 6 the shift costs a
-     * little: 144 instead of 136 (sphere), 363 instead of 331 (cube).
-     * Fixed gamma on the level-6 cube: 398 / 363 / 331 / 392 CG
-     * iterations for gamma = 1 / 2 / 4 / 8.
+     * G = gamma M + s Khat, s = sqrt((1+a)/b), with gamma =
+     * schur_mass_shift, and its multigrid keeps the interface translation
+     * mode 1 - V^2 on the coarse levels (SchurPreconditioner). CG
+     * iterations of the first step (eps = 4h, tau = 0.03h, ttau = h^2,
+     * 2 ranks; sphere r = 0.35: 4 Newton iterations, cube: 9-10), before
+     * (constant near null space, gamma = 4 + s c) and after:
+     * sphere level 6 154 -> 82, level 7 272 -> 132; cube level 6 363 ->
+     * 243. With the mode, gamma = 1.5 / 2.5 / 4 / 12 gave 92 / 85 / 82 /
+     * 161 on the level-6 sphere. Without it, gamma had to grow with the
+     * level (the nodal mass weight of Khat, 1 - b + c Psi''(V), is about
+     * -4c where V = 0, and s c grows like h^-1.5): the multigrid could not
+     * represent the nearly singular translations.
      */
     static constexpr double schur_mass_shift = 4;
 

@@ -88,7 +88,9 @@ namespace PhaseField
      * its spectrum in [1/2, 1] (the Schur complement preconditioner of
      * Boyanova, Do-Quang and Neytcheva for Cahn-Hilliard systems). The
      * multigrid hierarchy is built anew at every call (one "factorization"
-     * in n_factorizations()). Returns the CG iterations.
+     * in n_factorizations()). @p interface_mode, if given, joins the
+     * constant in the near null space of these hierarchies
+     * (SchurPreconditioner). Returns the CG iterations.
      */
     unsigned int
     solve_product_form(
@@ -99,7 +101,8 @@ namespace PhaseField
       const dealii::TrilinosWrappers::MPI::Vector  &mass,
       const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass,
       dealii::TrilinosWrappers::MPI::Vector        &solution,
-      const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+      const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+      const dealii::TrilinosWrappers::MPI::Vector  *interface_mode = nullptr);
 
     /**
      * Relative tolerance of the next solves (an inexact Newton method

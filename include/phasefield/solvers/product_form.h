@@ -30,10 +30,20 @@ namespace PhaseField
    * operator, three Chebyshev sweeps per level (measured on the 3D cube:
    * two sweeps need twice the CG iterations, more than three do not pay),
    * a coarsest level of at most multigrid_coarse_size unknowns.
+   *
+   * The near null space that the aggregation keeps on the coarse levels
+   * is the constant vector, and with @p interface_mode (locally owned
+   * values) also that vector: it should hold the slowly varying modes of
+   * @p matrix that the constant misses, as the rigid body modes do for
+   * elasticity. See SchurPreconditioner for the one used.
    */
   void
-  initialize_multigrid(dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
-                       const dealii::TrilinosWrappers::SparseMatrix &matrix);
+  initialize_multigrid(
+    dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
+    const dealii::TrilinosWrappers::SparseMatrix &matrix,
+    const dealii::TrilinosWrappers::MPI::Vector  *interface_mode = nullptr);
+
+
 
   /**
    * dst = A diag(@p diagonal) A src for a symmetric operator A, i.e. the
@@ -94,16 +104,30 @@ namespace PhaseField
    * The preconditioner G^-1 M G^-1 of
    * LinearSolver::solve_product_form(), with one multigrid cycle
    * for each G^-1.
+   *
+   * For the nested scheme, G = gamma M + s Khat with Khat = ttau (L +
+   * M[Psi''(V)]/(2 eps^2)) + (1-b) M, the linearised Allen-Cahn operator.
+   * Its near kernel is not the constant but the translation of the
+   * diffuse interface: for V = tanh(d/eps), d_n V = (1 - V^2)/eps, and
+   * (-d^2 + Psi''(V)/(2 eps^2)) (1 - V^2) = 0 across a flat interface. A
+   * normal displacement g along the interface, (1 - V^2) g, is then a
+   * slowly varying mode of G with a Rayleigh quotient near gamma, far
+   * below the s/h^2 of the other oscillating modes, and the aggregation
+   * can only represent it on coarse levels if it is in the near null
+   * space: pass @p interface_mode = 1 - V^2 (see NestedStep's
+   * schur_mass_shift for the measured effect).
    */
   class SchurPreconditioner
   {
   public:
-    SchurPreconditioner(const dealii::TrilinosWrappers::SparseMatrix &g,
-                        const dealii::TrilinosWrappers::MPI::Vector  &mass)
+    SchurPreconditioner(
+      const dealii::TrilinosWrappers::SparseMatrix &g,
+      const dealii::TrilinosWrappers::MPI::Vector  &mass,
+      const dealii::TrilinosWrappers::MPI::Vector  *interface_mode = nullptr)
       : mass(mass)
       , tmp(mass)
     {
-      initialize_multigrid(multigrid, g);
+      initialize_multigrid(multigrid, g, interface_mode);
     }
 
     void
