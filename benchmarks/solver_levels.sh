@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Iterative 3D solver across levels (issue 14): the first step of the sphere
-# (r = 0.35) and of the cube (edge 0.4), eps = 4h, tau = 0.03h,
-# inner tau = h^2, no output, 2 MPI ranks. Prints per run the Newton and
-# outer CG iterations of step 1, CG iterations per Newton iteration, the
-# wall time of the run and the CPU time summed over the ranks.
-# Usage: benchmarks/solver_levels.sh [build dir] [levels...]
+# Iterative 3D solver across levels (issue 14): the first STEPS steps
+# (default 1) of the sphere (r = 0.35) and of the cube (edge 0.4) (or of
+# the SHAPES given), eps = 4h, tau = 0.03h, inner tau = h^2, no output,
+# 2 MPI ranks. Prints per run the Newton and outer CG iterations summed
+# over the steps, CG iterations per Newton iteration, the wall time of the
+# run and the CPU time summed over the ranks.
+# Usage: [STEPS=n] [SHAPES="sphere cube"] benchmarks/solver_levels.sh
+#          [build dir] [levels...]
 #   e.g. benchmarks/solver_levels.sh build 5 6 7
+#        STEPS=10 SHAPES=sphere benchmarks/solver_levels.sh build 7
 set -uo pipefail
 build=${1:-build}; shift || true
 levels=${*:-5 6}
@@ -13,7 +16,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 printf '%-7s %-6s %6s %6s %8s %8s %8s\n' shape level newton cg cg/newton wall_s cpu_s
 for level in $levels; do
-  for shape in sphere cube; do
+  for shape in ${SHAPES:-sphere cube}; do
     size=$([ $shape = sphere ] && echo "Radius=0.35" || echo "Sizes=0.4")
     out=$work/${shape}_$level
     /usr/bin/time -f "%e %U" -o "$out.time" env OMP_NUM_THREADS=1 \
@@ -23,13 +26,14 @@ for level in $levels; do
       --set "Mesh/Finest level=$level" --set "Mesh/Coarsest level=3" \
       --set "Phase field/Epsilon=4*h" --set "Time stepping/Tau=0.03*h" \
       --set "Time stepping/Inner tau=h^2" \
-      --set "Time stepping/Number of steps=1" \
+      --set "Time stepping/Number of steps=${STEPS:-1}" \
       --set "Output/VTU interval=0" > "$out.log" 2>&1 || echo "$shape $level: FAILED ($out.log)"
     read -r wall cpu < "$out.time"
     /usr/bin/python3 - "$out/statistics.csv" "$shape" "$level" "$wall" "$cpu" <<'PY'
 import csv, sys
-row = list(csv.DictReader(open(sys.argv[1])))[-1]
-n, cg = int(float(row["newton_iterations"])), int(float(row["linear_iterations"]))
+rows = list(csv.DictReader(open(sys.argv[1])))[1:]
+n = sum(int(float(row["newton_iterations"])) for row in rows)
+cg = sum(int(float(row["linear_iterations"])) for row in rows)
 print(f'{sys.argv[2]:<7} {sys.argv[3]:<6} {n:>6} {cg:>6} {cg / max(n, 1):>8.1f} {float(sys.argv[4]):>8.1f} {float(sys.argv[5]):>8.1f}')
 PY
   done
