@@ -194,6 +194,21 @@ namespace PhaseField
 
 
   template <int dim>
+  double
+  NestedStep<dim>::roundoff_level(const BlockVector &z) const
+  {
+    const auto norm = [this](const Vector &x) {
+      return std::sqrt(ops.mass_product(x, x));
+    };
+    const double u = norm(z.block(Field::U));
+    return std::numeric_limits<double>::epsilon() *
+           (u + weights.a * (u + norm(z.block(Field::V))) +
+            norm(z.block(Field::P)));
+  }
+
+
+
+  template <int dim>
   void
   NestedStep<dim>::distribute_constraints(BlockVector &z) const
   {

@@ -99,17 +99,16 @@ namespace PhaseField
 
     /**
      * Whether @p norm (after an iteration that started at @p previous_norm)
-     * reached @p target or stagnates at NewtonControl::roundoff_level.
+     * reached @p target or stagnates below @p roundoff_level.
      */
     bool
-    reached_target(const NewtonControl &control,
-                   const double         norm,
-                   const double         previous_norm,
-                   const double         target)
+    reached_target(const double norm,
+                   const double previous_norm,
+                   const double target,
+                   const double roundoff_level)
     {
       // at round-off the residual stagnates above a tight target
-      const bool stagnating = control.roundoff_level > 0 &&
-                              norm <= control.roundoff_level &&
+      const bool stagnating = roundoff_level > 0 && norm <= roundoff_level &&
                               norm >= 0.5 * previous_norm;
       return norm <= target || stagnating;
     }
@@ -140,6 +139,8 @@ namespace PhaseField
       system, z, residual, control, pcout, verbose, norm, report);
     if (report.converged || !std::isfinite(norm))
       return report;
+    const double roundoff_level =
+      std::max(control.roundoff_level, system.roundoff_level(z));
 
     // Non-monotone "watchdog" step: once per solve a full Newton update is
     // accepted even if it increases the residual norm by up to
@@ -188,7 +189,7 @@ namespace PhaseField
                 << linear_iterations << " linear iterations, "
                 << linear_solver.n_factorizations() << " factorizations)"
                 << std::endl;
-        if (reached_target(control, norm, previous_norm, target))
+        if (reached_target(norm, previous_norm, target, roundoff_level))
           {
             report.converged = true;
             return report;

@@ -53,6 +53,18 @@ namespace PhaseField
     term_scale(const BlockVector &z) const = 0;
 
     /**
+     * The residual norm that the round-off of evaluating R(z) alone can
+     * produce (0: not known). newton_solve() stops as converged when the
+     * residual stagnates below it (as below
+     * NewtonControl::roundoff_level): a tighter target cannot be reached.
+     */
+    virtual double
+    roundoff_level(const BlockVector & /*z*/) const
+    {
+      return 0;
+    }
+
+    /**
      * Solve J(z) dz = -r with @p solver; returns the number of Krylov
      * iterations.
      */
