@@ -35,6 +35,11 @@ subsection Time stepping
   set Inner tau = h^2/4
   set Number of steps = 2
 end
+subsection Linear solver
+  # 6x the most CG iterations one Newton iteration needs here (35), so
+  # that CG on a wrong (indefinite) system fails within seconds
+  set Maximum iterations = 200
+end
 subsection Output
   set VTU interval = 0
 end
@@ -80,6 +85,11 @@ subsection Time stepping
   set Tau = 0.03*h
   set Inner tau = h^2/4
   set Number of steps = 3
+end
+subsection Linear solver
+  # 6x the most CG iterations one Newton iteration needs here (35), so
+  # that CG on a wrong (indefinite) system fails within seconds
+  set Maximum iterations = 200
 end
 subsection Output
   set VTU interval = 0
