@@ -1,17 +1,51 @@
 #include <Epetra_MultiVector.h>
+#include <Epetra_Vector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
+#include <deal.II/base/exceptions.h>
 #include <phasefield/solvers/product_form.h>
+#include <string>
 #include <vector>
 
 namespace PhaseField
 {
+  namespace
+  {
+    /**
+     * The Chebyshev smoother divides by the diagonal and the aggregation
+     * assumes a positive definite matrix: with a non-positive diagonal
+     * entry (a coefficient of the wrong sign) ML's coarsening stalls and the
+     * coarse direct solver factorises a level of nearly the fine size for
+     * minutes. Throw instead, on all ranks (Epetra's minimum is global).
+     */
+    void
+    assert_positive_diagonal(
+      const dealii::TrilinosWrappers::SparseMatrix &matrix)
+    {
+      const Epetra_CrsMatrix &epetra_matrix = matrix.trilinos_matrix();
+      Epetra_Vector           diagonal(epetra_matrix.RowMap());
+      epetra_matrix.ExtractDiagonalCopy(diagonal);
+      double minimum = 0.;
+      diagonal.MinValue(&minimum);
+      AssertThrow(minimum > 0.,
+                  dealii::ExcMessage(
+                    "The algebraic multigrid needs a matrix with a positive "
+                    "diagonal, but its smallest diagonal entry is " +
+                    std::to_string(minimum) +
+                    ": the matrix is not positive definite (a coefficient "
+                    "of the wrong sign?)."));
+    }
+  } // namespace
+
+
+
   void
   initialize_multigrid(
     dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
     const dealii::TrilinosWrappers::SparseMatrix &matrix,
     const dealii::TrilinosWrappers::MPI::Vector  *interface_mode)
   {
+    assert_positive_diagonal(matrix);
     dealii::TrilinosWrappers::PreconditionAMG::AdditionalData settings;
     settings.elliptic              = true;
     settings.higher_order_elements = false;
