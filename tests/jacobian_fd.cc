@@ -4,7 +4,9 @@
 // J dZ = -R, in 2D and 3D, on an adaptive mesh with hanging nodes; in 2D
 // also with the area term of edge restoration (eta > 0) and U held fixed
 // at the DoFs with x < 0.3 (the 3-field solve, also with a
-// Levenberg-Marquardt shift of the UU block). With the area term, R_U at a
+// Levenberg-Marquardt shift of the UU block), and with the area term but
+// no fixed U (GMRES preconditioned by the elimination without the area
+// term, with and without a shift). With the area term, R_U at a
 // state with V, P re-solved for U (NestedStep::solve_inner_problem) is
 // the gradient of the outer energy NestedStep::outer_energy, the merit
 // function of minimizing_newton_solve.
@@ -171,6 +173,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check<2>(LinearSolverType::direct);
   check<2>(LinearSolverType::direct, 1.);
+  check<2>(LinearSolverType::direct, 1., false, 3.);
   check<2>(LinearSolverType::direct, 10., true);
   check<2>(LinearSolverType::direct, 10., true, 3.);
   check<3>(LinearSolverType::direct);

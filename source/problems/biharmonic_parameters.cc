@@ -97,7 +97,8 @@ namespace PhaseField
   {
     const std::string name = parameter_name("Convergence", "Levels");
     prm.enter_subsection("Convergence");
-    levels = parse_integer_list(prm.get("Levels"), name, 1, max_mesh_level, true);
+    levels =
+      parse_integer_list(prm.get("Levels"), name, 1, max_mesh_level, true);
     prm.leave_subsection();
   }
 
@@ -192,6 +193,7 @@ namespace PhaseField
     ConvergenceParameters::declare_parameters(prm);
     BiharmonicTimeParameters::declare_parameters(prm);
     AugmentedLagrangianParameters::declare_parameters(prm);
+    LinearSolverParameters::declare_parameters(prm);
   }
 
 
@@ -205,6 +207,7 @@ namespace PhaseField
     convergence.parse_parameters(prm);
     time.parse_parameters(prm);
     augmented_lagrangian.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
     // Validate the step sizes of every level before any computation.
     for (const unsigned int level : convergence.levels)
       time.step_sizes(std::ldexp(1.0, -static_cast<int>(level)));

@@ -229,13 +229,18 @@ namespace PhaseField
 
   namespace
   {
-    /** Relative residual reduction of the (preconditioned) linear solver. */
-    constexpr double linear_solver_tolerance = 1e-12;
     /**
-     * GMRES iterations allowed per solve; with the exact factorisation of
-     * the same matrix as preconditioner one iteration suffices.
+     * Relative residual reduction of GMRES preconditioned with the
+     * factorisation (direct type; the iterative type takes `Linear solver /
+     * Tolerance`).
      */
-    constexpr unsigned int linear_solver_max_iterations = 100;
+    constexpr double direct_solver_tolerance = 1e-12;
+    /**
+     * GMRES iterations allowed per solve of the direct type; with the exact
+     * factorisation of the same matrix as preconditioner one iteration
+     * suffices.
+     */
+    constexpr unsigned int direct_solver_max_iterations = 100;
     /**
      * Newton's method on the linear system: one iteration solves a step
      * exactly (the residual drops to round-off, far below this); a second
@@ -264,27 +269,33 @@ namespace PhaseField
     }
 
     /** The nested scheme of the biharmonic model with forcing @p f. */
+    template <int dim>
     SchemeSettings
     biharmonic_scheme(const BiharmonicParameters          &parameters,
                       const double                         inner_tau,
                       const TrilinosWrappers::MPI::Vector *f)
     {
       SchemeSettings s;
-      s.scheme                           = parameters.time.scheme;
-      s.augmented_lagrangian             = parameters.augmented_lagrangian;
-      s.epsilon                          = 1;
-      s.inner_tau                        = inner_tau;
-      s.double_well                      = false;
-      s.outer_energy.forcing             = f;
-      s.newton.relative_tolerance        = newton_relative_tolerance;
-      s.newton.absolute_tolerance        = 0;
-      s.newton.max_iterations            = newton_max_iterations;
-      s.newton.max_damping_steps         = 0;
-      s.newton.watchdog_factor           = 1;
-      s.newton.max_step_halvings         = 0;
-      s.linear_solver.type               = LinearSolverType::direct;
-      s.linear_solver.relative_tolerance = linear_solver_tolerance;
-      s.linear_solver.max_iterations     = linear_solver_max_iterations;
+      s.scheme                    = parameters.time.scheme;
+      s.augmented_lagrangian      = parameters.augmented_lagrangian;
+      s.epsilon                   = 1;
+      s.inner_tau                 = inner_tau;
+      s.double_well               = false;
+      s.outer_energy.forcing      = f;
+      s.newton.relative_tolerance = newton_relative_tolerance;
+      s.newton.absolute_tolerance = 0;
+      s.newton.max_iterations     = newton_max_iterations;
+      s.newton.max_damping_steps  = 0;
+      s.newton.watchdog_factor    = 1;
+      s.newton.max_step_halvings  = 0;
+      s.linear_solver             = parameters.linear_solver;
+      s.linear_solver.type =
+        LinearSolver::resolve_type(parameters.linear_solver.type, dim);
+      if (s.linear_solver.type == LinearSolverType::direct)
+        {
+          s.linear_solver.relative_tolerance = direct_solver_tolerance;
+          s.linear_solver.max_iterations     = direct_solver_max_iterations;
+        }
       return s;
     }
   } // namespace
@@ -323,9 +334,9 @@ namespace PhaseField
     discretization.create_mesh(nullptr, 1.);
     const LumpedOperators<dim> &operators = discretization.get_operators();
     scheme                                = create_time_stepping_scheme<dim>(
-      biharmonic_scheme(prm,
-                        step_sizes.inner_tau,
-                        exact.forced ? &forcing_vector : nullptr),
+      biharmonic_scheme<dim>(prm,
+                             step_sizes.inner_tau,
+                             exact.forced ? &forcing_vector : nullptr),
       discretization,
       pcout);
     discretization.reinit(solution, scheme->n_fields());
@@ -475,7 +486,7 @@ namespace PhaseField
               << ", inner tau = " << r.inner_tau << ", " << r.n_steps
               << " steps to t = " << r.time << ", " << r.n_dofs
               << " DoFs per field, " << r.n_factorizations
-              << " factorisation(s), " << r.al_iterations << " AL / "
+              << " preconditioner set-up(s), " << r.al_iterations << " AL / "
               << r.tr_iterations << " trust-region / " << r.linear_iterations
               << " Krylov iterations, relative residual "
               << std::setprecision(2) << r.relative_residual

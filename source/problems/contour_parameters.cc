@@ -86,7 +86,7 @@ namespace PhaseField
     prm.enter_subsection("Model");
     const auto weight = [&](const std::string &name, const bool positive) {
       const std::string full = "Model / " + name;
-      const double value = evaluate_expression_in_h(prm.get(name), 1, full);
+      const double value     = evaluate_expression_in_h(prm.get(name), 1, full);
       if (positive ? !(value > 0) : !(value >= 0))
         throw InputError("The parameter <" + full + "> must be " +
                          (positive ? "positive (the nested scheme needs a "
@@ -150,13 +150,13 @@ namespace PhaseField
 
   void
   MultilevelParameters::parse_parameters(ParameterHandler  &prm,
-                                                             const unsigned int finest_level,
+                                         const unsigned int finest_level,
                                          const unsigned int coarsest_level)
   {
     prm.enter_subsection("Multilevel");
-    levels = prm.get("Levels").empty() ?
-               std::vector<unsigned int>{finest_level} :
-               parse_integer_list(prm.get("Levels"),
+    levels          = prm.get("Levels").empty() ?
+                        std::vector<unsigned int>{finest_level} :
+                        parse_integer_list(prm.get("Levels"),
                                   "Multilevel / Levels",
                                   1,
                                   max_mesh_level,
@@ -166,11 +166,11 @@ namespace PhaseField
                                          0,
                                          std::numeric_limits<int>::max(),
                                          false);
-    transition = prm.get("Transition") == "automatic" ?
-                   LevelTransition::automatic :
-                   LevelTransition::fixed;
-    window    = prm.get_integer("Transition window");
-    tolerance = prm.get_double("Transition tolerance");
+    transition      = prm.get("Transition") == "automatic" ?
+                        LevelTransition::automatic :
+                        LevelTransition::fixed;
+    window          = prm.get_integer("Transition window");
+    tolerance       = prm.get_double("Transition tolerance");
     prm.leave_subsection();
     if (levels.size() != steps_per_level.size())
       throw InputError("<Multilevel / Levels> has " +
@@ -220,17 +220,6 @@ namespace PhaseField
       throw InputError("shape_from_contour needs <Time stepping / Scheme> = "
                        "nested: the Willmore and area weights of its "
                        "regularisation are part of the nested scheme only.");
-    // with the area term the nested Newton system is the 3-field system,
-    // which only the direct solver handles (NestedStep::solve_full_system)
-    const LinearSolverType solver = willmore.linear_solver.type;
-    if (model.area_weight > 0 &&
-        (solver == LinearSolverType::iterative ||
-         (solver == LinearSolverType::automatic && willmore.dimension == 3)))
-      throw InputError(
-        "<Model / Area weight> > 0 makes each Newton system of the nested "
-        "scheme a 3-field system, which only the direct solver handles: set "
-        "<Linear solver / Type> = direct (auto means iterative in 3D) or "
-        "<Model / Area weight> = 0.");
     // a target shape that cannot be made is a mistake in the file: say so
     // before any mesh exists
     if (!target.is_image())

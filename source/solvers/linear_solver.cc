@@ -57,6 +57,7 @@ namespace PhaseField
   LinearSolver::reset()
   {
     factorization.reset();
+    schur_preconditioner.reset();
     last_iterations = 0;
   }
 
@@ -180,16 +181,21 @@ namespace PhaseField
     const TrilinosWrappers::MPI::Vector  *interface_mode)
   {
     Assert(solver_type == LinearSolverType::iterative, ExcInternalError());
-    const ProductFormMatrix   s(k_hat, w, d, inverse_mass);
-    const SchurPreconditioner preconditioner(g, mass, interface_mode);
-    ++factorization_count;
+    const ProductFormMatrix s(k_hat, w, d, inverse_mass);
+    if (!constant_matrix || !schur_preconditioner ||
+        schur_preconditioner->size() != g.m())
+      {
+        schur_preconditioner =
+          std::make_unique<SchurPreconditioner>(g, mass, interface_mode);
+        ++factorization_count;
+      }
     SolverControl                           control(max_iterations,
                           tolerance * rhs.l2_norm(),
                           false,
                           false);
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     solution = 0;
-    cg.solve(s, solution, rhs, preconditioner);
+    cg.solve(s, solution, rhs, *schur_preconditioner);
     last_iterations = control.last_step();
     return last_iterations;
   }

@@ -100,6 +100,13 @@ namespace PhaseField
     ConvergenceParameters         convergence;
     BiharmonicTimeParameters      time;
     AugmentedLagrangianParameters augmented_lagrangian;
+    /**
+     * How the nested scheme's reduced system is solved: direct (one MUMPS
+     * factorisation per level) or iterative (CG with the product-form
+     * multigrid preconditioner of willmore_flow, memory linear in the
+     * unknowns); `auto` is direct in 2D and iterative in 3D.
+     */
+    LinearSolverParameters linear_solver;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

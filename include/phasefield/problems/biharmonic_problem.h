@@ -76,7 +76,11 @@ namespace PhaseField
      * step is solved exactly).
      */
     double relative_residual;
-    /** LU factorisations of the time-step matrix on this level (1). */
+    /**
+     * Set-ups of the time-step matrix's preconditioner on this level (1):
+     * LU factorisations (direct solver) or multigrid hierarchies
+     * (iterative solver).
+     */
     unsigned int n_factorizations;
     /**
      * Totals over the steps: outer and trust-region iterations of the
@@ -107,9 +111,10 @@ namespace PhaseField
    *
    * The equations are linear, so one Newton step from (U^k, V^k, P^k)
    * solves a time step exactly, and the reduced matrix S of the nested
-   * scheme does not depend on the state: the scheme factorises it (MUMPS)
-   * once per mesh, every time step costs one forward/backward
-   * substitution.
+   * scheme does not depend on the state: the scheme factorises it (MUMPS,
+   * `Linear solver / Type = direct`) or builds its multigrid preconditioner
+   * (`iterative`) once per mesh; every time step then costs one
+   * forward/backward substitution or one preconditioned CG solve.
    */
   template <int dim>
   class BiharmonicProblem

@@ -171,6 +171,18 @@ namespace PhaseField
       /** 1 - V^2, the near kernel of G (SchurPreconditioner). */
       Vector interface_mode;
       /**
+       * The weight w of the UU block w M that S eliminates: 1 + a, plus
+       * the Levenberg-Marquardt shift of a shifted system.
+       */
+      double uu_weight = 0;
+      /**
+       * The direct solver of S when the reduced system preconditions the
+       * 3-field system of an area term without fixed U values (the
+       * contour problem): it keeps its factorisation of S across Newton
+       * iterations as the scheme's solver does for willmore_flow.
+       */
+      std::unique_ptr<LinearSolver> preconditioner_solver;
+      /**
        * The assembled 3-field Jacobian (restoration terms): its sparsity
        * pattern depends on the mesh only, so it is built once per mesh and
        * only its values are refilled in every Newton iteration (which also
@@ -320,11 +332,17 @@ namespace PhaseField
   private:
     class InnerProblem;
 
-    /** Build K(V) and S at the state @p z. */
+    /**
+     * Build K(V) and S at the state @p z, S for the UU block
+     * (1 + a + @p shift) M: with w = 1 + a + shift,
+     *   S = w Khat M^-1 Khat + a (1 - a/w) M + E,  Khat = K - (a/w) M,
+     * which is the S of the class documentation for shift = 0.
+     */
     void
     build_reduced_matrices(const BlockVector     &z,
                            ReducedMatrices       &matrices,
-                           const LinearSolverType type) const;
+                           const LinearSolverType type,
+                           const double           shift = 0) const;
 
     /** J dZ = -R by elimination with the matrices of the state. */
     unsigned int
@@ -357,13 +375,42 @@ namespace PhaseField
     void
     reinit_full_jacobian(dealii::TrilinosWrappers::SparseMatrix &j) const;
 
-    /** J dZ = -R with the assembled 3-field Jacobian (shifted by shift M). */
+    /**
+     * J dZ = -R for the Jacobian with the area term (shifted by shift M):
+     * with fixed U values by the assembled 3-field Jacobian, otherwise by
+     * solve_area_system().
+     */
     unsigned int
     solve_full_system(const BlockVector &z,
                       const BlockVector &r,
                       BlockVector       &dz,
                       LinearSolver      &solver,
                       const double       shift) const;
+
+    /**
+     * J dZ = -R for the Jacobian with an area term and no fixed U values
+     * (the contour problem): flexible GMRES on J (applied matrix-free),
+     * preconditioned by the elimination of the Jacobian without the area
+     * term, whose UU block is (1 + a + shift) M. The area term's part of
+     * the UU block, tau eta (L + M[Psi''(U)]/(2 eps^2)), is smaller than
+     * (1 + a) M by about eta ttau^2/h^2 (eta h^2 for ttau = h^2), so a few
+     * GMRES iterations suffice, and only the scalar S is factorised
+     * instead of the 3-field matrix. Returns the GMRES iterations.
+     */
+    unsigned int
+    solve_area_system(const BlockVector &z,
+                      const BlockVector &r,
+                      BlockVector       &dz,
+                      LinearSolver      &solver,
+                      const double       shift) const;
+
+    /** y = J(Z) x as jacobian_vmult(), with K(V) given as @p k. */
+    void
+    apply_jacobian(const dealii::TrilinosWrappers::SparseMatrix &k,
+                   const BlockVector                            &z,
+                   const BlockVector                            &x,
+                   BlockVector                                  &y,
+                   const double                                  shift) const;
 
     /** Is the U value at locally owned index @p i held fixed? */
     bool
@@ -396,6 +443,21 @@ namespace PhaseField
      * represent the nearly singular translations.
      */
     static constexpr double schur_mass_shift = 4;
+
+    /**
+     * Relative tolerance and iteration limit of the solves of S that
+     * precondition solve_area_system() (direct: GMRES with a kept
+     * factorisation of S, refactorised when it needs more than
+     * LinearSolver::default_refactorization_threshold iterations;
+     * iterative: CG with one multigrid hierarchy per Newton system).
+     * Measured against 1e-4: fig6_5_disc.prm, 10 level-6 steps, 1 rank,
+     * 1.65 s instead of 2.02 s of user time (GMRES iterations 11-14
+     * instead of 9-11 per step); the 3D test shape_from_contour_3d with
+     * eta = 1, 8.5 s instead of 14.8 s for the first step (29 instead of
+     * 25 FGMRES iterations; both under load).
+     */
+    static constexpr double       area_preconditioner_tolerance      = 1e-2;
+    static constexpr unsigned int area_preconditioner_max_iterations = 100;
 
     const Discretization<dim>  &discretization;
     const LumpedOperators<dim> &ops;
@@ -500,9 +562,27 @@ namespace PhaseField
      */
     static constexpr unsigned int full_system_refactorization_threshold = 20;
 
-    /** A direct solver with the tolerances of `Linear solver`. */
+    /**
+     * minimizing_newton_solve() of @p step from @p state: Newton's method
+     * as a descent method for the outer energy, with V and P re-solved for
+     * every trial U (edge restoration).
+     */
+    StepReport
+    descent_solve(NestedStep<dim>     &step,
+                  BlockVector         &state,
+                  const NewtonControl &control);
+
+    /** A solver of type @p type with the tolerances of `Linear solver`. */
     std::unique_ptr<LinearSolver>
-    make_direct_solver() const;
+    make_solver(const LinearSolverType type) const;
+
+    /**
+     * The biharmonic model (no double well, no restoration terms): the
+     * Newton system is linear with the same matrices in every step on a
+     * mesh.
+     */
+    bool
+    linear_model() const;
 
     const SchemeSettings              settings;
     const Discretization<dim>        &discretization;
@@ -513,6 +593,15 @@ namespace PhaseField
      * the 3-field Jacobian with restoration terms.
      */
     std::unique_ptr<typename NestedStep<dim>::ReducedMatrices> mesh_matrices;
+    /**
+     * Take the descent method directly in the next step (area term, all U
+     * free): set by initialize(), whose state (the start of a run, or a
+     * level transition of the contour problem with the U of the coarser
+     * epsilon) is far from the nested step's equilibrium. In the Fig. 6.5
+     * run Newton's method failed in the first step of levels 8 and 9
+     * (W = 2862 and 11405 at their start, 11.5 after the step).
+     */
+    bool descent_next_step = false;
   };
 } // namespace PhaseField
 

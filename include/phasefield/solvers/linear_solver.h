@@ -2,6 +2,7 @@
 #define phasefield_solvers_linear_solver_h
 
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <memory>
@@ -10,6 +11,8 @@
 
 namespace PhaseField
 {
+  class SchurPreconditioner;
+
   /**
    * The linear solver of the Newton systems of all schemes (the reduced
    * systems of NestedScheme and SemiImplicitScheme, the inner problem's
@@ -105,6 +108,34 @@ namespace PhaseField
       const dealii::TrilinosWrappers::MPI::Vector  *interface_mode = nullptr);
 
     /**
+     * Solve @p op x = @p rhs by flexible GMRES with the preconditioner
+     * @p preconditioner, which may itself be an inexact iterative solve
+     * (vmult(dst, src) both), to the current tolerance; for block systems
+     * whose preconditioner is built by the caller. Returns the
+     * iterations.
+     */
+    template <typename Operator, typename Preconditioner, typename VectorType>
+    unsigned int
+    solve_flexible(const Operator       &op,
+                   VectorType           &solution,
+                   const VectorType     &rhs,
+                   const Preconditioner &preconditioner)
+    {
+      dealii::SolverControl            control(max_iterations,
+                                    tolerance * rhs.l2_norm(),
+                                    false,
+                                    false);
+      dealii::SolverFGMRES<VectorType> fgmres(
+        control,
+        typename dealii::SolverFGMRES<VectorType>::AdditionalData(
+          gmres_restart));
+      solution = 0;
+      fgmres.solve(op, solution, rhs, preconditioner);
+      last_iterations = control.last_step();
+      return last_iterations;
+    }
+
+    /**
      * Relative tolerance of the next solves (an inexact Newton method
      * sets it per iteration); never tighter than the one given to the
      * constructor.
@@ -123,16 +154,20 @@ namespace PhaseField
       pivoting_workspace_percent = percent;
     }
 
-    /** Forget the stored factorisation (e.g. after re-meshing). */
+    /**
+     * Forget the stored factorisation and multigrid hierarchy (e.g. after
+     * re-meshing).
+     */
     void
     reset();
 
     /**
-     * Declare whether every following solve() is with the matrix of the
-     * stored factorisation (a linear problem whose matrix is constant on
-     * a mesh). If so, solve() applies the factorisation once instead of
-     * running GMRES with it (the first solve still factorises). Only
-     * meaningful for the direct type.
+     * Declare whether every following solve is with the matrices of the
+     * first one (a linear problem whose matrices are constant on a mesh).
+     * If so, solve() applies the stored factorisation once instead of
+     * running GMRES with it (the first solve still factorises), and
+     * solve_product_form() keeps the multigrid hierarchies of its first
+     * call.
      */
     void
     set_constant_matrix(const bool constant)
@@ -194,8 +229,10 @@ namespace PhaseField
     const unsigned int                   stale_iteration_limit;
     double                               tolerance;
     std::unique_ptr<DirectFactorization> factorization;
-    unsigned int                         last_iterations            = 0;
-    unsigned int                         factorization_count        = 0;
+    unsigned int                         last_iterations     = 0;
+    unsigned int                         factorization_count = 0;
+    /** The product-form preconditioner, kept with set_constant_matrix(). */
+    std::unique_ptr<SchurPreconditioner> schur_preconditioner;
     bool                                 constant_matrix            = false;
     unsigned int                         pivoting_workspace_percent = 0;
   };

@@ -137,6 +137,13 @@ namespace PhaseField
       apply_symmetric_product(multigrid, mass, tmp, dst, src);
     }
 
+    /** Number of rows of the preconditioned matrix. */
+    dealii::types::global_dof_index
+    size() const
+    {
+      return mass.size();
+    }
+
   private:
     dealii::TrilinosWrappers::PreconditionAMG     multigrid;
     const dealii::TrilinosWrappers::MPI::Vector  &mass;
