@@ -367,6 +367,7 @@ namespace PhaseField
                            std::to_string(e.inside_measure) +
                            "); nothing of this step was written. Try a "
                            "smaller <Time stepping / Tau>."));
+    const std::vector<double> extras = client.extra_values(state, e);
     statistics->add_row(concatenate<double>({double(step),
                                              time,
                                              double(report.newton_iterations),
@@ -382,7 +383,7 @@ namespace PhaseField
                                              report.final_residual_norm,
                                              double(report.al_iterations),
                                              double(report.tr_iterations)},
-                                            client.extra_values(state, e)));
+                                            extras));
     pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
           << std::setprecision(5) << time << "  newton "
           << report.newton_iterations << " (linear " << report.linear_iterations
@@ -390,6 +391,10 @@ namespace PhaseField
           << "  A = " << e.area << "  inside = " << e.inside_measure;
     if (!std::isnan(error))
       pcout << "  L2 error = " << std::setprecision(4) << error;
+    const std::vector<std::string> extra_names = client.extra_columns();
+    for (unsigned int i = 0; i < extras.size(); ++i)
+      pcout << "  " << extra_names[i] << " = " << std::setprecision(5)
+            << extras[i];
     pcout << "  cells " << cells << "  [" << std::setprecision(3)
           << wall_timer.wall_time() << " s]" << std::endl;
     if (with_output && settings.vtu_interval > 0 &&

@@ -130,7 +130,10 @@ namespace PhaseField
         return std::numeric_limits<double>::quiet_NaN();
       }
 
-      /** Names of the problem's own statistics.csv columns. */
+      /**
+       * Names of the problem's own statistics.csv columns; the progress
+       * line of each step shows them too.
+       */
       virtual std::vector<std::string>
       extra_columns() const
       {
