@@ -75,8 +75,9 @@ def plot_contour(rows, out):
     for i in range(1, len(rows)):
         if rows[i]["level"] != rows[i - 1]["level"]:
             ax.axvline(step[i], color="gray", linestyle=":")
-            ax.text(step[i], ax.get_ylim()[1], " h = 2^-" +
-                    rows[i]["level"].split(".")[0], va="top", fontsize=8)
+            level = rows[i]["level"].split(".")[0]
+            ax.text(step[i], ax.get_ylim()[1], f" $h = 2^{{-{level}}}$",
+                    va="top", ha="left", rotation=90, fontsize=8)
     ax.set_xlabel("step")
     ax.set_ylabel("energy")
     ax.set_title("shape from contour: energy components")
