@@ -2,6 +2,7 @@
 #include <cmath>
 #include <phasefield/schemes/augmented_lagrangian_scheme.h>
 #include <phasefield/schemes/double_well.h>
+#include <phasefield/solvers/product_form.h>
 
 namespace PhaseField
 {
@@ -212,39 +213,42 @@ namespace PhaseField
   template <int dim>
   void
   AugmentedLagrangianStep<dim>::setup_preconditioner(const BlockVector &x,
-                                                     const Vector      &y,
-                                                     const double       penalty)
+                                                     const Vector &,
+                                                     const double penalty)
   {
-    if (schur_solver != nullptr)
-      setup_schur(x, penalty);
-    else
-      setup_block_jacobi(x, y, penalty);
-  }
-
-
-
-  template <int dim>
-  void
-  AugmentedLagrangianStep<dim>::setup_schur(const BlockVector &x,
-                                            const double       penalty)
-  {
+    // S_V = w Khat M^-1 Khat + m M, Khat = K - b M (class documentation)
     const double s    = f_scale;
     const double a    = weights.a;
+    const double b    = a / (1 + a);
     const double beta = s * (1 + a) + penalty;
+    const double w    = penalty * s * (1 + a) / beta;
+    const double m    = s * a / beta * (s + penalty / (1 + a));
     schur_beta        = beta;
     schur_penalty     = penalty;
     schur_v           = x.block(x_v);
     const Vector &v   = x.block(x_v);
-    Vector        k_hat_weight(v);
+    if (schur_solver == nullptr)
+      {
+        // the multigrid keeps a reference to G
+        schur_multigrid.reset();
+        nested_step.build_schur_factor(
+          v, b, w, m, schur_factor, interface_mode);
+        schur_multigrid = std::make_unique<SchurPreconditioner>(
+          schur_factor, ops.lumped_mass, &interface_mode);
+        const double gamma = NestedStep<dim>::schur_mass_shift;
+        schur_inverse_scale = gamma * gamma / m;
+        return;
+      }
+    Vector k_hat_weight(v);
     for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
-      k_hat_weight.begin()[i] = weights.k(v.begin()[i], a / (1 + a));
+      k_hat_weight.begin()[i] = weights.k(v.begin()[i], b);
     TrilinosWrappers::SparseMatrix k_hat;
     ops.stiffness_plus_weighted_mass(weights.inner_tau, k_hat_weight, k_hat);
     Vector weight(ops.inverse_lumped_mass);
-    weight *= penalty * s * (1 + a) / beta;
+    weight *= w;
     k_hat.mmult(schur, k_hat, weight);
     Vector diagonal(ops.lumped_mass);
-    diagonal *= s * a / beta * (s + penalty / (1 + a));
+    diagonal *= m;
     ops.add_to_diagonal(diagonal, schur);
     schur_solver->reset();
     schur_solver->set_constant_matrix(true);
@@ -255,50 +259,17 @@ namespace PhaseField
 
   template <int dim>
   void
-  AugmentedLagrangianStep<dim>::setup_block_jacobi(const BlockVector &x,
-                                                   const Vector      &y,
-                                                   const double       penalty)
+  AugmentedLagrangianStep<dim>::apply_schur_inverse(const Vector &r,
+                                                    Vector       &z) const
   {
-    inverse_uu.reinit(y, true);
-    inverse_uv.reinit(y, true);
-    inverse_vv.reinit(y, true);
-    const auto        &L  = ops.stiffness;
-    const double      *m  = ops.lumped_mass.begin();
-    const double      *v  = x.block(x_v).begin();
-    const double       a  = weights.a;
-    const double       tt = weights.inner_tau;
-    const unsigned int n  = y.locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
+    if (schur_solver != nullptr)
+      schur_solver->solve(schur, z, r);
+    else
       {
-        if (!(m[i] > 0))
-          continue; // constrained: the block stays zero
-        const types::global_dof_index row =
-          ops.locally_owned_dofs.nth_index_in_set(i);
-        const double k_mass = m[i] * weights.k(v[i]);
-        // K_ii and sum_j K_ij^2 / m_i
-        double k_ii = k_mass, k_squares = 0;
-        for (auto entry = L.begin(row); entry != L.end(row); ++entry)
-          {
-            const bool   diagonal = entry->column() == row;
-            const double k_ij = tt * entry->value() + (diagonal ? k_mass : 0.);
-            if (diagonal)
-              k_ii = k_ij;
-            k_squares += k_ij * k_ij;
-          }
-        const double uu      = m[i] * (f_scale * (1 + a) + penalty);
-        double       uv      = -m[i] * f_scale * a - penalty * k_ii;
-        const double vv_base = m[i] * f_scale * a + penalty * k_squares / m[i];
-        double       vv      = vv_base + m[i] * weights.e(v[i], y.begin()[i]);
-        const auto   determinant = [&]() { return uu * vv - uv * uv; };
-        if (!(vv > 0) || determinant() <= min_relative_determinant * uu * vv)
-          vv = vv_base;
-        if (determinant() <= min_relative_determinant * uu * vv)
-          uv = 0;
-        const double det      = determinant();
-        inverse_uu.begin()[i] = vv / det;
-        inverse_uv.begin()[i] = -uv / det;
-        inverse_vv.begin()[i] = uu / det;
+        schur_multigrid->vmult(z, r);
+        z *= schur_inverse_scale;
       }
+    ops.zero_constrained(z);
   }
 
 
@@ -308,44 +279,30 @@ namespace PhaseField
   AugmentedLagrangianStep<dim>::precondition(const BlockVector &r,
                                              BlockVector       &z) const
   {
-    if (schur_solver != nullptr)
-      {
-        // B z = r: w = (beta M)^-1 r_U, S_V z_V = r_V + (s a M + lambda K) w,
-        // z_U = (beta M)^-1 (r_U + (s a M + lambda K) z_V)
-        const double s_a      = f_scale * weights.a;
-        const auto   coupling = [&](const Vector &in, Vector &out) {
-          k_vmult(schur_v, in, out);
-          out *= schur_penalty;
-          Vector mass_part(in);
-          mass_part.scale(ops.lumped_mass);
-          out.add(s_a, mass_part);
-          ops.zero_constrained(out);
-        };
-        Vector w(r.block(x_u)), rhs(w), cz(w);
-        w.scale(ops.inverse_lumped_mass);
-        w /= schur_beta;
-        ops.zero_constrained(w);
-        coupling(w, rhs);
-        rhs += r.block(x_v);
-        schur_solver->solve(schur, z.block(x_v), rhs);
-        ops.zero_constrained(z.block(x_v));
-        coupling(z.block(x_v), cz);
-        cz += r.block(x_u);
-        cz.scale(ops.inverse_lumped_mass);
-        cz /= schur_beta;
-        ops.zero_constrained(cz);
-        z.block(x_u) = cz;
-        return;
-      }
-    const unsigned int n = r.block(x_u).locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const double ru = r.block(x_u).begin()[i], rv = r.block(x_v).begin()[i];
-        z.block(x_u).begin()[i] =
-          inverse_uu.begin()[i] * ru + inverse_uv.begin()[i] * rv;
-        z.block(x_v).begin()[i] =
-          inverse_uv.begin()[i] * ru + inverse_vv.begin()[i] * rv;
-      }
+    // B z = r: w = (beta M)^-1 r_U, S_V z_V = r_V + (s a M + lambda K) w,
+    // z_U = (beta M)^-1 (r_U + (s a M + lambda K) z_V)
+    const double s_a      = f_scale * weights.a;
+    const auto   coupling = [&](const Vector &in, Vector &out) {
+      k_vmult(schur_v, in, out);
+      out *= schur_penalty;
+      Vector mass_part(in);
+      mass_part.scale(ops.lumped_mass);
+      out.add(s_a, mass_part);
+      ops.zero_constrained(out);
+    };
+    Vector w(r.block(x_u)), rhs(w), cz(w);
+    w.scale(ops.inverse_lumped_mass);
+    w /= schur_beta;
+    ops.zero_constrained(w);
+    coupling(w, rhs);
+    rhs += r.block(x_v);
+    apply_schur_inverse(rhs, z.block(x_v));
+    coupling(z.block(x_v), cz);
+    cz += r.block(x_u);
+    cz.scale(ops.inverse_lumped_mass);
+    cz /= schur_beta;
+    ops.zero_constrained(cz);
+    z.block(x_u) = cz;
   }
 
 
@@ -410,7 +367,8 @@ namespace PhaseField
              "trust region, Steihaug-Toint truncated CG with matrix-free "
              "Hessian products, Schur-complement preconditioner (MUMPS)" :
              "trust region, Steihaug-Toint truncated CG with matrix-free "
-             "Hessian products, nodal block-Jacobi preconditioner";
+             "Hessian products, Schur-complement preconditioner in product "
+             "form (algebraic multigrid)";
   }
 
 

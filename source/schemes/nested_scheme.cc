@@ -369,21 +369,30 @@ namespace PhaseField
     else
       {
         build_k(v, b, matrices.k_hat);
-        // G = gamma M + sqrt(w/b') Khat, b' = mass_weight, so that
-        // b' G M^-1 G / gamma^2 approximates S, with gamma =
-        // schur_mass_shift, and the interface translation mode 1 - V^2
-        // for its multigrid
-        const double scale  = std::sqrt(w / mass_weight);
-        Vector       weight = k_weights(v, b);
-        weight *= scale;
-        weight.add(schur_mass_shift);
-        matrices.interface_mode.reinit(v, true);
-        for (unsigned int i = 0; i < n; ++i)
-          matrices.interface_mode.begin()[i] = 1 - v.begin()[i] * v.begin()[i];
-        ops.stiffness_plus_weighted_mass(scale * weights.inner_tau,
-                                         weight,
-                                         matrices.g);
+        build_schur_factor(
+          v, b, w, mass_weight, matrices.g, matrices.interface_mode);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  NestedStep<dim>::build_schur_factor(const Vector                   &v,
+                                      const double                    b,
+                                      const double                    w,
+                                      const double                    m,
+                                      TrilinosWrappers::SparseMatrix &g,
+                                      Vector &interface_mode) const
+  {
+    const double scale  = std::sqrt(w / m);
+    Vector       weight = k_weights(v, b);
+    weight *= scale;
+    weight.add(schur_mass_shift);
+    ops.stiffness_plus_weighted_mass(scale * weights.inner_tau, weight, g);
+    interface_mode.reinit(v, true);
+    for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+      interface_mode.begin()[i] = 1 - v.begin()[i] * v.begin()[i];
   }
 
 

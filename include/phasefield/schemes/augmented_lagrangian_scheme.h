@@ -10,6 +10,7 @@
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/solvers/augmented_lagrangian.h>
 #include <phasefield/solvers/linear_solver.h>
+#include <phasefield/solvers/product_form.h>
 
 /**
  * The nested step of thesis chapter 3 solved as in thesis chapter 7: the
@@ -41,20 +42,23 @@ namespace PhaseField
    * is the (U, V) of the nested step's saddle point; the multipliers are
    * related by P_AL = -2 s P_nested.
    *
-   * Preconditioner with a solver set by set_schur_solver() (the direct
-   * solver, 2D): B = f'' + lambda J^T M^-1 J (the Hessian without the
-   * third-derivative term), inverted exactly by eliminating U (its UU
-   * block (s(1+a) + lambda) M is diagonal; here s = f_scale):
+   * Preconditioner: B = f'' + lambda J^T M^-1 J (the Hessian without the
+   * third-derivative term), inverted by eliminating U (its UU block
+   * (s(1+a) + lambda) M is diagonal; here s = f_scale) and solving with
    *
    *   S_V = (lambda s (1+a)/beta) Khat M^-1 Khat
    *         + (s a/beta)(s + lambda/(1+a)) M,
    *   beta = s(1+a) + lambda,  Khat = K - a/(1+a) M,
    *
-   * assembled and factorised once per trust-region iterate.
-   * Without a solver it is nodal block Jacobi: at every DoF the 2x2 block
-   * of the Hessian of l_A (with diag(K M^-1 K)_ii approximated by
-   * sum_j K_ij^2 / m_i), made positive definite by dropping first the
-   * Psi''' term and then the U-V coupling where it is not.
+   * once per trust-region iterate: with a solver set by set_schur_solver()
+   * (the direct solver, 2D) S_V is assembled and factorised; without one
+   * it is approximated in product form, m G M^-1 G / gamma^2 with
+   * G = gamma M + sqrt(w/m) Khat (NestedStep::build_schur_factor(), the
+   * preconditioner of the nested scheme's iterative solver) and one
+   * multigrid cycle per G^-1: memory linear in the unknowns. S_V has the
+   * form of the nested scheme's Schur complement without its diagonal E,
+   * with the weights w, m above (for lambda -> infinity, s times the
+   * nested scheme's w = 1 + a, m = a/(1+a)).
    */
   template <int dim>
   class AugmentedLagrangianStep : public ConstrainedMinimizationProblem
@@ -127,11 +131,9 @@ namespace PhaseField
     void
     k_vmult(const Vector &v, const Vector &d, Vector &kd) const;
 
-    /**
-     * Below this relative determinant a nodal 2x2 block of the
-     * preconditioner is not used as it is (see the class documentation).
-     */
-    static constexpr double min_relative_determinant = 1e-6;
+    /** @p z = S_V^-1 @p r, exactly or by the multigrid product form. */
+    void
+    apply_schur_inverse(const Vector &r, Vector &z) const;
 
     const Discretization<dim>  &discretization;
     const LumpedOperators<dim> &ops;
@@ -142,17 +144,14 @@ namespace PhaseField
     const double f_scale;
     /** R_P of the nested step: c(x). */
     const NestedStep<dim> nested_step;
-    /** Nodal block Jacobi (no Schur solver). */
-    void
-    setup_block_jacobi(const BlockVector &x,
-                       const Vector      &y,
-                       const double       penalty);
-    /** The Schur complement S_V of the class documentation, factorised. */
-    void
-    setup_schur(const BlockVector &x, const double penalty);
-
-    /** Entries of the inverse nodal 2x2 blocks of the preconditioner. */
-    Vector inverse_uu, inverse_uv, inverse_vv;
+    /**
+     * The product form of S_V (no Schur solver): G, its multigrid, 1 - V^2
+     * and gamma^2/m.
+     */
+    dealii::TrilinosWrappers::SparseMatrix schur_factor;
+    std::unique_ptr<SchurPreconditioner>   schur_multigrid;
+    Vector                               interface_mode;
+    double                               schur_inverse_scale = 0;
     /** The direct solver of S_V, or null. */
     LinearSolver *schur_solver = nullptr;
     /** S_V, the V of the iterate and the coefficients of B. */

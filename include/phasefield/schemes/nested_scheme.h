@@ -329,6 +329,41 @@ namespace PhaseField
     void
     inner_residual(const Vector &u, const Vector &v, Vector &r) const;
 
+    /**
+     * The factor G of the product-form preconditioner of
+     * S = w Khat M^-1 Khat + m M (+ a diagonal), Khat = K(V) - b M:
+     * G = gamma M + sqrt(w/m) Khat with gamma = schur_mass_shift, so that
+     * m G M^-1 G / gamma^2 approximates S, and the interface translation
+     * mode 1 - V^2 for its multigrid (SchurPreconditioner). Serves the
+     * iterative solver of this scheme (b = a/(1+a), w = 1+a) and the
+     * preconditioner of the augmented Lagrangian's trust region.
+     */
+    void
+    build_schur_factor(const Vector                           &v,
+                       const double                            b,
+                       const double                            w,
+                       const double                            m,
+                       dealii::TrilinosWrappers::SparseMatrix &g,
+                       Vector                                 &interface_mode) const;
+
+    /**
+     * The shift gamma of build_schur_factor(). The preconditioner of the
+     * iterative solver uses
+     * G = gamma M + s Khat, s = sqrt((1+a)/b), with gamma =
+     * schur_mass_shift, and its multigrid keeps the interface translation
+     * mode 1 - V^2 on the coarse levels (SchurPreconditioner). CG
+     * iterations of the first step (eps = 4h, tau = 0.03h, ttau = h^2,
+     * 2 ranks; sphere r = 0.35: 4 Newton iterations, cube: 9-10), before
+     * (constant near null space, gamma = 4 + s c) and after:
+     * sphere level 6 154 -> 82, level 7 272 -> 132; cube level 6 363 ->
+     * 243. With the mode, gamma = 1.5 / 2.5 / 4 / 12 gave 92 / 85 / 82 /
+     * 161 on the level-6 sphere. Without it, gamma had to grow with the
+     * level (the nodal mass weight of Khat, 1 - b + c Psi''(V), is about
+     * -4c where V = 0, and s c grows like h^-1.5): the multigrid could not
+     * represent the nearly singular translations.
+     */
+    static constexpr double schur_mass_shift = 4;
+
   private:
     class InnerProblem;
 
@@ -427,22 +462,6 @@ namespace PhaseField
             const double                            shift,
             dealii::TrilinosWrappers::SparseMatrix &k) const;
 
-    /**
-     * The preconditioner of the iterative solver uses
-     * G = gamma M + s Khat, s = sqrt((1+a)/b), with gamma =
-     * schur_mass_shift, and its multigrid keeps the interface translation
-     * mode 1 - V^2 on the coarse levels (SchurPreconditioner). CG
-     * iterations of the first step (eps = 4h, tau = 0.03h, ttau = h^2,
-     * 2 ranks; sphere r = 0.35: 4 Newton iterations, cube: 9-10), before
-     * (constant near null space, gamma = 4 + s c) and after:
-     * sphere level 6 154 -> 82, level 7 272 -> 132; cube level 6 363 ->
-     * 243. With the mode, gamma = 1.5 / 2.5 / 4 / 12 gave 92 / 85 / 82 /
-     * 161 on the level-6 sphere. Without it, gamma had to grow with the
-     * level (the nodal mass weight of Khat, 1 - b + c Psi''(V), is about
-     * -4c where V = 0, and s c grows like h^-1.5): the multigrid could not
-     * represent the nearly singular translations.
-     */
-    static constexpr double schur_mass_shift = 4;
 
     /**
      * Relative tolerance and iteration limit of the solves of S that
