@@ -88,9 +88,8 @@ namespace
                    << std::endl;
 
     typename Discretization<dim>::Settings mesh_settings{};
-    mesh_settings.mesh.finest_level = mesh_settings.mesh.coarsest_level =
-      level;
-    mesh_settings.mesh.adaptive             = false;
+    mesh_settings.mesh.finest_level = mesh_settings.mesh.coarsest_level = level;
+    mesh_settings.mesh.adaptive                                         = false;
     mesh_settings.mesh.stiffness_quadrature = StiffnessQuadrature::gauss;
     Discretization<dim> discretization(mesh_settings, comm);
     discretization.create_mesh(nullptr, 1.);
@@ -106,8 +105,10 @@ namespace
         const ConditionalOStream quiet(std::cout,
                                        std::getenv("AL_VERBOSE") != nullptr &&
                                          root);
-        auto         s = create_time_stepping_scheme<dim>(
-          settings(scheme, h, epsilon, solver), discretization, quiet);
+        auto                     s =
+          create_time_stepping_scheme<dim>(settings(scheme, h, epsilon, solver),
+                                           discretization,
+                                           quiet);
         TBlockVector state;
         discretization.reinit(state, 3);
         discretization.interpolate(profile, state.block(Field::U));
@@ -126,18 +127,17 @@ namespace
         Testing::log() << s->name() << ": converged "
                        << (report.converged ? "yes" : "NO") << std::endl;
         if (dim == 3 && scheme == Scheme::augmented_lagrangian)
-          Testing::log()
-            << "CG iterations per trust-region iteration "
-            << (report.linear_iterations <
-                    max_cg_per_trust_region * report.tr_iterations ?
-                  "< 10" :
-                  "TOO MANY")
-            << std::endl;
+          Testing::log() << "CG iterations per trust-region iteration "
+                         << (report.linear_iterations <
+                                 max_cg_per_trust_region *
+                                   report.tr_iterations ?
+                               "< 10" :
+                               "TOO MANY")
+                         << std::endl;
         results.push_back(state);
       }
 
-    const auto relative = [&](const unsigned int  field,
-                              const TBlockVector &a) {
+    const auto relative = [&](const unsigned int field, const TBlockVector &a) {
       TVector difference(a.block(field));
       difference -= results[0].block(field);
       return std::sqrt(

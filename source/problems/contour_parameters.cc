@@ -143,6 +143,14 @@ namespace PhaseField
                       "Automatic transition: move on when the total energy "
                       "decreased by less than this fraction of its value "
                       "over the window.");
+    prm.declare_entry("Sharpen interface",
+                      "false",
+                      Patterns::Bool(),
+                      "At each level transition, map the transferred U to "
+                      "the profile of the finer epsilon, U <- tanh((eps_old "
+                      "/ eps_new) artanh(U)) at every node (U = tanh(d/eps) "
+                      "has the width of the coarse level otherwise), before "
+                      "V and P are solved again.");
     prm.leave_subsection();
   }
 
@@ -171,6 +179,7 @@ namespace PhaseField
                         LevelTransition::fixed;
     window          = prm.get_integer("Transition window");
     tolerance       = prm.get_double("Transition tolerance");
+    sharpen         = prm.get_bool("Sharpen interface");
     prm.leave_subsection();
     if (levels.size() != steps_per_level.size())
       throw InputError("<Multilevel / Levels> has " +

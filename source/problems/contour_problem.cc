@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <phasefield/core/constants.h>
@@ -193,6 +194,21 @@ namespace PhaseField
 
   template <int dim>
   void
+  ContourProblem<dim>::sharpen_profile(Vector &u, const double ratio)
+  {
+    // U = tanh(d/eps_old) gives d/eps_old = artanh(U); |U| = 1 (or beyond,
+    // from the interpolation) is clamped to keep artanh finite
+    const double largest = 1 - Constants::roundoff;
+    for (double &value : u)
+      value =
+        std::tanh(ratio * std::atanh(std::clamp(value, -largest, largest)));
+    u.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
   ContourProblem<dim>::move_to_level(const unsigned int index)
   {
     const WillmoreParameters next = parameters.for_level(index);
@@ -200,6 +216,9 @@ namespace PhaseField
       TimerOutput::Scope t(this->computing_timer, "mesh: level transition");
       this->discretization.refine_to_level(next.mesh.finest_level,
                                            this->solution);
+      if (parameters.multilevel.sharpen)
+        sharpen_profile(this->solution.block(0),
+                        level_prm.model.epsilon / next.model.epsilon);
       this->discretization.distribute_constraints(this->solution);
     }
     TimerOutput::Scope t(this->computing_timer, "initialisation");

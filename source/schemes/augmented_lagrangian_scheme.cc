@@ -233,9 +233,11 @@ namespace PhaseField
         schur_multigrid.reset();
         nested_step.build_schur_factor(
           v, b, w, m, schur_factor, interface_mode);
-        schur_multigrid = std::make_unique<SchurPreconditioner>(
-          schur_factor, ops.lumped_mass, &interface_mode);
-        const double gamma = NestedStep<dim>::schur_mass_shift;
+        schur_multigrid =
+          std::make_unique<SchurPreconditioner>(schur_factor,
+                                                ops.lumped_mass,
+                                                &interface_mode);
+        const double gamma  = NestedStep<dim>::schur_mass_shift;
         schur_inverse_scale = gamma * gamma / m;
         return;
       }

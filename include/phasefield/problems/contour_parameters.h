@@ -39,7 +39,8 @@ namespace PhaseField
   /**
    * Subsection `Model`: the weights of thesis (6.3), acting on the energies
    * as printed there (without the 3/4 of geometric units):
-   * e = eta a_eps[u] + mu (eps/2) ||(v-u)/ttau||^2 + gamma ||alpha* - alpha[u]||^2.
+   * e = eta a_eps[u] + mu (eps/2) ||(v-u)/ttau||^2 + gamma ||alpha* -
+   * alpha[u]||^2.
    */
   struct ContourModelParameters
   {
@@ -82,6 +83,11 @@ namespace PhaseField
      */
     unsigned int window;
     double       tolerance;
+    /**
+     * Map U to the finer epsilon's profile at each level transition
+     * (ContourProblem::move_to_level()).
+     */
+    bool sharpen;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -152,9 +152,20 @@ namespace PhaseField
     void
     start_level(const unsigned int index);
 
-    /** The next level: refine the band, new scheme, V and P for U. */
+    /**
+     * The next level: refine the band, with `Multilevel / Sharpen
+     * interface` sharpen U to the finer epsilon, new scheme, V and P for U.
+     */
     void
     move_to_level(const unsigned int index);
+
+    /**
+     * U <- tanh(@p ratio artanh(U)) at every locally owned node: the
+     * profile tanh(d/eps_old) becomes tanh(d/eps_new) for
+     * @p ratio = eps_old/eps_new, with the zero level set unchanged.
+     */
+    static void
+    sharpen_profile(Vector &u, const double ratio);
 
     /** Step 2 of Algorithm 6.1 on U in @p state. */
     void

@@ -150,8 +150,8 @@ namespace PhaseField
      */
     dealii::TrilinosWrappers::SparseMatrix schur_factor;
     std::unique_ptr<SchurPreconditioner>   schur_multigrid;
-    Vector                               interface_mode;
-    double                               schur_inverse_scale = 0;
+    Vector                                 interface_mode;
+    double                                 schur_inverse_scale = 0;
     /** The direct solver of S_V, or null. */
     LinearSolver *schur_solver = nullptr;
     /** S_V, the V of the iterate and the coefficients of B. */

@@ -344,7 +344,7 @@ namespace PhaseField
                        const double                            w,
                        const double                            m,
                        dealii::TrilinosWrappers::SparseMatrix &g,
-                       Vector                                 &interface_mode) const;
+                       Vector &interface_mode) const;
 
     /**
      * The shift gamma of build_schur_factor(). The preconditioner of the
