@@ -223,10 +223,11 @@ namespace PhaseField
     const double beta = s * (1 + a) + penalty;
     const double w    = penalty * s * (1 + a) / beta;
     const double m    = s * a / beta * (s + penalty / (1 + a));
-    schur_beta        = beta;
-    schur_penalty     = penalty;
-    schur_v           = x.block(x_v);
-    const Vector &v   = x.block(x_v);
+    ++setups;
+    schur_beta      = beta;
+    schur_penalty   = penalty;
+    schur_v         = x.block(x_v);
+    const Vector &v = x.block(x_v);
     if (schur_solver == nullptr)
       {
         // the multigrid keeps a reference to G
@@ -449,6 +450,7 @@ namespace PhaseField
     state.block(Field::U) = x.block(0);
     state.block(Field::V) = x.block(1);
     state.block(Field::P) = p;
+    preconditioner_setups += step.n_setups();
 
     StepReport report;
     report.converged         = al.converged;

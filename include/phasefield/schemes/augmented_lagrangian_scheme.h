@@ -120,6 +120,13 @@ namespace PhaseField
       schur_solver = &solver;
     }
 
+    /** The preconditioner set-ups (setup_preconditioner() calls) so far. */
+    unsigned int
+    n_setups() const
+    {
+      return setups;
+    }
+
     /**
      * A two-block vector (U, V) in the layout of the DoFs, zero.
      */
@@ -159,6 +166,7 @@ namespace PhaseField
     Vector                                 schur_v;
     double                                 schur_beta    = 0;
     double                                 schur_penalty = 0;
+    unsigned int                           setups        = 0;
   };
 
   /**
@@ -206,11 +214,14 @@ namespace PhaseField
     reset_solver() override;
     Energies
     energies(const BlockVector &state) const override;
-    /** No factorisations: 0. */
+    /**
+     * Preconditioner set-ups so far: one per gradient evaluation (the
+     * factorisation of S_V or the multigrid hierarchy of its product form).
+     */
     unsigned int
     n_factorizations() const override
     {
-      return 0;
+      return preconditioner_setups;
     }
     void
     curvature(const BlockVector &state, Vector &curvature) const override;
@@ -238,6 +249,8 @@ namespace PhaseField
     NestedScheme<dim> nested;
     /** The penalty the next step starts with. */
     double next_penalty;
+    /** Sum of AugmentedLagrangianStep::n_setups() over the steps. */
+    unsigned int preconditioner_setups = 0;
     /** The solver of the Schur preconditioner (direct type only). */
     std::unique_ptr<LinearSolver> schur_solver;
   };
