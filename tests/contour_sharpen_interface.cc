@@ -1,11 +1,11 @@
 // Multilevel / Sharpen interface (shape_from_contour): at a level
 // transition the transferred U = tanh(d/eps_old) has the width of the
 // coarse level, twice the finer epsilon, and its Willmore energy at the
-// finer epsilon jumps (thesis Fig. 6.5 setting at levels 5 and 6, the disc
-// of shape_from_contour_2d: measured 2026-11-25 at levels 6-9, W 11.7 ->
-// 726, 11.5 -> 2862, 11.5 -> 11405). Mapping U to tanh((eps_old/eps_new)
-// artanh(U)) restores the profile of the finer epsilon with the same zero
-// level set. Checked:
+// finer epsilon jumps (the program's defaults, the thesis Fig. 6.5 disc of
+// shape_from_contour_2d, at levels 5 and 6; measured 2026-11-25 at levels 6-9,
+// W 11.7 -> 726, 11.5 -> 2862, 11.5 -> 11405). Mapping U to
+// tanh((eps_old/eps_new) artanh(U)) restores the profile of the finer epsilon
+// with the same zero level set. Checked:
 // - without sharpening W at the transition row exceeds 5 times W at the
 //   end of level 5 (the jump this option is for; 9.2 times measured);
 // - with it W at the transition row is less than twice that W;
@@ -48,28 +48,6 @@ subsection Multilevel
   set Steps per level   = 8, 0
   set Sharpen interface = )" + std::string(sharpen ? "true" : "false") +
                                     R"(
-end
-subsection Geometry
-  set Shape  = circle
-  set Center = 0.5, 0.5
-  set Radius = 0.13
-end
-subsection Target
-  set Shape  = circle
-  set Center = 0.5, 0.5
-  set Radius = 0.25
-end
-subsection Model
-  set Willmore weight = 0.05
-  set Area weight     = 0.05
-  set Mismatch weight = 10
-end
-subsection Phase field
-  set Epsilon = 4*h
-end
-subsection Time stepping
-  set Tau       = 0.03*h
-  set Inner tau = h^2
 end
 )",
                                   header,

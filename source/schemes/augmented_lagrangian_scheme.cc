@@ -219,34 +219,48 @@ namespace PhaseField
     // S_V = w Khat M^-1 Khat + m M, Khat = K - b M (class documentation)
     const double s    = f_scale;
     const double a    = weights.a;
-    const double b    = a / (1 + a);
     const double beta = s * (1 + a) + penalty;
     const double w    = penalty * s * (1 + a) / beta;
     const double m    = s * a / beta * (s + penalty / (1 + a));
     ++setups;
-    schur_beta      = beta;
-    schur_penalty   = penalty;
-    schur_v         = x.block(x_v);
-    const Vector &v = x.block(x_v);
+    schur_beta    = beta;
+    schur_penalty = penalty;
+    schur_v       = x.block(x_v);
     if (schur_solver == nullptr)
-      {
-        // the multigrid keeps a reference to G
-        schur_multigrid.reset();
-        nested_step.build_schur_factor(
-          v, b, w, m, schur_factor, interface_mode);
-        schur_multigrid =
-          std::make_unique<SchurPreconditioner>(schur_factor,
-                                                ops.lumped_mass,
-                                                &interface_mode);
-        const double gamma  = NestedStep<dim>::schur_mass_shift;
-        schur_inverse_scale = gamma * gamma / m;
-        return;
-      }
-    Vector k_hat_weight(v);
-    for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
-      k_hat_weight.begin()[i] = weights.k(v.begin()[i], b);
+      setup_schur_multigrid(a / (1 + a), w, m);
+    else
+      factorize_schur(a / (1 + a), w, m);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::setup_schur_multigrid(const double b,
+                                                      const double w,
+                                                      const double m)
+  {
+    // the multigrid keeps a reference to G
+    schur_multigrid.reset();
+    nested_step.build_schur_factor(
+      schur_v, b, w, m, schur_factor, interface_mode);
+    schur_multigrid     = std::make_unique<SchurPreconditioner>(schur_factor,
+                                                            ops.lumped_mass,
+                                                            &interface_mode);
+    const double gamma  = NestedStep<dim>::schur_mass_shift;
+    schur_inverse_scale = gamma * gamma / m;
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianStep<dim>::factorize_schur(const double b,
+                                                const double w,
+                                                const double m)
+  {
     TrilinosWrappers::SparseMatrix k_hat;
-    ops.stiffness_plus_weighted_mass(weights.inner_tau, k_hat_weight, k_hat);
+    nested_step.build_k(schur_v, b, k_hat);
     Vector weight(ops.inverse_lumped_mass);
     weight *= w;
     k_hat.mmult(schur, k_hat, weight);

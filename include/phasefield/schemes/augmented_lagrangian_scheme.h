@@ -138,6 +138,17 @@ namespace PhaseField
     void
     k_vmult(const Vector &v, const Vector &d, Vector &kd) const;
 
+    /**
+     * S_V = w Khat M^-1 Khat + m M, Khat = K(V) - b M at V = schur_v, in
+     * product form with its multigrid (no Schur solver).
+     */
+    void
+    setup_schur_multigrid(const double b, const double w, const double m);
+
+    /** The same S_V assembled and factorised by the Schur solver. */
+    void
+    factorize_schur(const double b, const double w, const double m);
+
     /** @p z = S_V^-1 @p r, exactly or by the multigrid product form. */
     void
     apply_schur_inverse(const Vector &r, Vector &z) const;

@@ -329,6 +329,12 @@ namespace PhaseField
     void
     inner_residual(const Vector &u, const Vector &v, Vector &r) const;
 
+    /** K(V) - shift M = M[k_weight] + ttau L. */
+    void
+    build_k(const Vector                           &v,
+            const double                            shift,
+            dealii::TrilinosWrappers::SparseMatrix &k) const;
+
     /**
      * The factor G of the product-form preconditioner of
      * S = w Khat M^-1 Khat + m M (+ a diagonal), Khat = K(V) - b M:
@@ -456,11 +462,6 @@ namespace PhaseField
     Vector
     k_weights(const Vector &v, const double shift) const;
 
-    /** K(V) - shift M = M[k_weight] + ttau L. */
-    void
-    build_k(const Vector                           &v,
-            const double                            shift,
-            dealii::TrilinosWrappers::SparseMatrix &k) const;
 
 
     /**
