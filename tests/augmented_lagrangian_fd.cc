@@ -3,7 +3,9 @@
 // gradient agrees with central differences of its value, and its
 // matrix-free Hessian product with central differences of the gradient,
 // in 2D and 3D on an adaptive mesh with hanging nodes, for Willmore flow
-// (scaled and unscaled) and for the biharmonic model with a forcing; the
+// (scaled and unscaled), for the biharmonic model with a forcing and for
+// edge restoration (area term, U fixed at every second DoF: the gradient,
+// the Hessian products and the preconditioner are 0 there); the
 // truncated CG step of the trust region decreases the quadratic model
 // and stays inside the radius.
 
@@ -40,9 +42,22 @@ namespace
   }
 } // namespace
 
+/** Largest |U-entry| of @p x at the DoFs of @p fixed. */
+double
+max_at_fixed(const TBlockVector &x, const IndexSet &fixed)
+{
+  double largest = 0;
+  for (const auto i : fixed)
+    largest = std::max(largest, std::abs(x.block(0)[i]));
+  return Utilities::MPI::max(largest, MPI_COMM_WORLD);
+}
+
 template <int dim>
 void
-check(const bool double_well, const bool scaled, const double penalty)
+check(const bool   double_well,
+      const bool   scaled,
+      const double penalty,
+      const bool   restoration = false)
 {
   const MPI_Comm comm = MPI_COMM_WORLD;
   (void)comm;
@@ -70,6 +85,17 @@ check(const bool double_well, const bool scaled, const double penalty)
       forcing.scale(ops.lumped_mass);
       coeff.outer.forcing = &forcing;
     }
+  // restoration: area weight eta = 4 (the shipped files), U fixed at the
+  // locally owned DoFs of even index
+  IndexSet fixed(ops.locally_owned_dofs.size());
+  if (restoration)
+    {
+      for (const auto i : ops.locally_owned_dofs)
+        if (i % 2 == 0)
+          fixed.add_index(i);
+      coeff.outer.area_weight = 4;
+      coeff.outer.fixed_u     = &fixed;
+    }
   TVector old_u(u0);
   old_u.add(0.05, w);
   AugmentedLagrangianStep<dim> step(mesh.discretization, coeff, old_u, scaled);
@@ -88,9 +114,16 @@ check(const bool double_well, const bool scaled, const double penalty)
       d.block(b).add(0.5 * b, u0);
       ops.zero_constrained(d.block(b));
     }
+  // a direction that keeps the fixed values
+  for (const auto i : fixed)
+    d.block(0)[i] = 0;
+  d.compress(VectorOperation::insert);
   mesh.discretization.distribute_constraints(x);
 
-  Testing::log() << dim << "D, " << (double_well ? "Willmore" : "biharmonic")
+  Testing::log() << dim << "D, "
+                 << (restoration ? "restoration" :
+                     double_well ? "Willmore" :
+                                   "biharmonic")
                  << (scaled ? ", scaled" : ", unscaled") << ", lambda "
                  << penalty << ", " << mesh.constraints.n_constraints()
                  << " hanging-node constraints" << std::endl;
@@ -117,6 +150,15 @@ check(const bool double_well, const bool scaled, const double penalty)
   objective.hessian_vmult(d, hd);
   gp -= hd;
   report("|H d - FD| / |H d|", step.gradient_norm(gp) / step.gradient_norm(hd));
+  if (restoration)
+    {
+      TBlockVector z(x);
+      objective.precondition(g, z);
+      Testing::log() << "  at fixed U: gradient, H d, B^-1 gradient "
+                     << max_at_fixed(g, fixed) << ", "
+                     << max_at_fixed(hd, fixed) << ", "
+                     << max_at_fixed(z, fixed) << std::endl;
+    }
 
   // Steihaug-Toint: decrease of the model, inside the B-norm radius
   const double      radius = 1e-3;
@@ -143,6 +185,7 @@ main(int argc, char **argv)
   check<2>(true, true, 10.);
   check<2>(true, false, 1e4);
   check<2>(false, true, 10.);
+  check<2>(true, true, 1e3, true);
   check<3>(true, true, 10.);
   check<3>(false, true, 1e3);
 }

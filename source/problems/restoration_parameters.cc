@@ -145,10 +145,11 @@ namespace PhaseField
     if (willmore.dimension != 2)
       throw InputError("edge_restoration works in 2D only: <Dimension> must "
                        "be 2.");
-    if (willmore.model.scheme != Scheme::nested)
+    if (willmore.model.scheme == Scheme::semi_implicit)
       throw InputError("edge_restoration needs <Time stepping / Scheme> = "
-                       "nested: the area term and the fixed values outside "
-                       "the region are part of the nested scheme only.");
+                       "nested or augmented lagrangian: the area term and the "
+                       "fixed values outside the region are not part of the "
+                       "semi-implicit scheme.");
     const std::string &shape = willmore.geometry.shape;
     if (shape == "image" && restoration.image_file.empty())
       throw InputError("Shape = image needs <Geometry / Image file>.");

@@ -28,9 +28,20 @@ namespace PhaseField
     , coeff(coefficients)
     , weights(coefficients)
     , old_u(old_u)
-    , f_scale(2 * (scaled ? 1. : coefficients.epsilon))
+    , f_scale(objective_scale(coefficients, scaled))
     , nested_step(discretization, coefficients, old_u)
   {}
+
+
+
+  template <int dim>
+  double
+  AugmentedLagrangianStep<dim>::objective_scale(
+    const NestedCoefficients &coefficients,
+    const bool                scaled)
+  {
+    return 2 * (scaled ? 1. : coefficients.epsilon);
+  }
 
 
 
@@ -48,16 +59,9 @@ namespace PhaseField
   double
   AugmentedLagrangianStep<dim>::objective(const BlockVector &x) const
   {
-    const Vector &u = x.block(x_u);
-    Vector        difference(u);
-    difference -= old_u;
-    double value = ops.mass_product(difference, difference);
-    difference   = x.block(x_v);
-    difference -= u;
-    value += weights.a * ops.mass_product(difference, difference);
-    if (coeff.outer.forcing != nullptr)
-      value -= 2 * coeff.tau / coeff.epsilon * (*coeff.outer.forcing * u);
-    return 0.5 * f_scale * value;
+    // the nested step's outer energy is e_out / (2 eps); x = (U, V) has
+    // the block indices of Field::U and Field::V
+    return f_scale * nested_step.outer_energy(x);
   }
 
 
@@ -83,6 +87,8 @@ namespace PhaseField
                      (f ? forcing_factor * f[i] : 0.));
         g.block(x_v).begin()[i] = f_scale * a_difference;
       }
+    nested_step.add_area_gradient(x.block(x_u), f_scale, g.block(x_u));
+    nested_step.zero_fixed_u(g.block(x_u));
     for (unsigned int b = 0; b < 2; ++b)
       ops.zero_constrained(g.block(b));
   }
@@ -91,7 +97,7 @@ namespace PhaseField
 
   template <int dim>
   void
-  AugmentedLagrangianStep<dim>::objective_hessian_vmult(const BlockVector &,
+  AugmentedLagrangianStep<dim>::objective_hessian_vmult(const BlockVector &x,
                                                         const BlockVector &d,
                                                         BlockVector &y) const
   {
@@ -106,6 +112,13 @@ namespace PhaseField
           f_scale * m[i] * ((1 + a) * du[i] - a * dv[i]);
         y.block(x_v).begin()[i] = f_scale * m[i] * a * (dv[i] - du[i]);
       }
+    nested_step.add_area_hessian_vmult(x.block(x_u),
+                                       d.block(x_u),
+                                       f_scale,
+                                       y.block(x_u));
+    nested_step.zero_fixed_u(y.block(x_u));
+    for (unsigned int b = 0; b < 2; ++b)
+      ops.zero_constrained(y.block(b));
   }
 
 
@@ -165,6 +178,7 @@ namespace PhaseField
     g.block(x_u) = y;
     g.block(x_u).scale(ops.lumped_mass);
     g.block(x_u) *= -1;
+    nested_step.zero_fixed_u(g.block(x_u));
     ops.zero_constrained(g.block(x_u));
   }
 
@@ -319,6 +333,7 @@ namespace PhaseField
     cz.scale(ops.inverse_lumped_mass);
     cz /= schur_beta;
     ops.zero_constrained(cz);
+    nested_step.zero_fixed_u(cz);
     z.block(x_u) = cz;
   }
 
@@ -499,6 +514,11 @@ namespace PhaseField
                                                const double tau)
   {
     nested.after_remesh(state, tau);
+    if (settings.outer_energy.has_restoration_terms())
+      // the nested scheme re-solved V and its adjoint P for the new mesh;
+      // the multiplier of the augmented Lagrangian is -2s times that P
+      state.block(Field::P) *= -AugmentedLagrangianStep<dim>::objective_scale(
+        nested.coefficients(tau), settings.augmented_lagrangian.scaled);
   }
 
 

@@ -136,25 +136,71 @@ namespace PhaseField
         r_v.begin()[i] += a * m[i] * (vi - ui) + k_diag * pi;
         r_p.begin()[i] += m[i] * ((vi - ui) + c * DoubleWell::d_psi(vi));
       }
-    if (coeff.outer.has_restoration_terms())
-      {
-        // area term tau eta (L U + M Psi'(U) / (2 eps^2)); no U-row at
-        // fixed U values
-        const double area_factor = weights.area_factor;
-        const double c_u         = weights.area_potential_factor;
-        Vector       l_u(u);
-        L.vmult(l_u, u);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            r_u.begin()[i] +=
-              area_factor *
-              (l_u.begin()[i] + c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
-            if (u_is_fixed(i))
-              r_u.begin()[i] = 0;
-          }
-      }
+    // the area term; no U-row at fixed U values
+    add_area_gradient(u, 1., r_u);
+    zero_fixed_u(r_u);
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(r.block(b));
+  }
+
+
+
+  template <int dim>
+  void
+  NestedStep<dim>::add_area_gradient(const Vector &u,
+                                     const double  factor,
+                                     Vector       &g) const
+  {
+    if (coeff.outer.area_weight == 0)
+      return;
+    Vector l_u(u);
+    ops.stiffness.vmult(l_u, u);
+    const double       scale = factor * weights.area_factor;
+    const double       c_u   = weights.area_potential_factor;
+    const double      *m     = ops.lumped_mass.begin();
+    const unsigned int n     = u.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      g.begin()[i] +=
+        scale *
+        (l_u.begin()[i] + c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
+  }
+
+
+
+  template <int dim>
+  void
+  NestedStep<dim>::add_area_hessian_vmult(const Vector &u,
+                                          const Vector &d,
+                                          const double  factor,
+                                          Vector       &y) const
+  {
+    if (coeff.outer.area_weight == 0)
+      return;
+    Vector l_d(d);
+    ops.stiffness.vmult(l_d, d);
+    const double       scale = factor * weights.area_factor;
+    const double       c_u   = weights.area_potential_factor;
+    const double      *m     = ops.lumped_mass.begin();
+    const unsigned int n     = u.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      y.begin()[i] += scale * (l_d.begin()[i] + c_u * m[i] *
+                                                  DoubleWell::d2_psi(
+                                                    u.begin()[i]) *
+                                                  d.begin()[i]);
+  }
+
+
+
+  template <int dim>
+  void
+  NestedStep<dim>::zero_fixed_u(Vector &u_block) const
+  {
+    if (coeff.outer.fixed_u == nullptr)
+      return;
+    const unsigned int n = u_block.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      if (u_is_fixed(i))
+        u_block.begin()[i] = 0;
   }
 
 

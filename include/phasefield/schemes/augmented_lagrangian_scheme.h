@@ -28,9 +28,16 @@ namespace PhaseField
    *   f(U, V) = s (|U-U^k|_M^2 + a |V-U|_M^2 - 2 (tau/eps) F.U),
    *   c(U, V) = M C(U, V) = M(V-U) + c M Psi'(V) + ttau L V = R_P,
    *
-   * with a = tau/ttau^2, c = ttau/(2 eps^2) (0 for the biharmonic model),
-   * F the forcing of the biharmonic model, s = 1 (scaled, thesis (7.9):
-   * f = e_out/eps) or s = eps (unscaled: f = e_out). The derivatives are
+   * with a = mu tau/ttau^2, c = ttau/(2 eps^2) (0 for the biharmonic
+   * model), F the forcing of the biharmonic model, s = 1 (scaled, thesis
+   * (7.9): f = e_out/eps) or s = eps (unscaled: f = e_out). Edge
+   * restoration adds the area term 2s tau eta a_eps[U]/eps to f (its
+   * gradient and Hessian from NestedStep::add_area_gradient() and
+   * NestedStep::add_area_hessian_vmult()), and U is fixed at the DoFs of
+   * OuterEnergy::fixed_u: the U-entries of the gradient, of every Hessian
+   * product and of the preconditioner are 0 there, so that the trust
+   * region never moves them. In short, f = 2s NestedStep::outer_energy().
+   * The derivatives are
    *
    *   grad f = 2s (M(U-U^k) - a M(V-U) - (tau/eps) F,  a M(V-U)),
    *   f''    = 2s [(1+a)M  -aM; -aM  aM],
@@ -44,7 +51,9 @@ namespace PhaseField
    *
    * Preconditioner: B = f'' + lambda J^T M^-1 J (the Hessian without the
    * third-derivative term), inverted by eliminating U (its UU block
-   * (s(1+a) + lambda) M is diagonal; here s = f_scale) and solving with
+   * (s(1+a) + lambda) M is diagonal; here s = f_scale; the area term of
+   * edge restoration is left out of it, as it is O(s tau eta h^-2) M against
+   * s a M = s mu tau ttau^-2 M) and solving with
    *
    *   S_V = (lambda s (1+a)/beta) Khat M^-1 Khat
    *         + (s a/beta)(s + lambda/(1+a)) M,
@@ -126,6 +135,13 @@ namespace PhaseField
     {
       return setups;
     }
+
+    /**
+     * The factor 2s of f: s = 1 (@p scaled) or s = epsilon. The multipliers
+     * are related by P_AL = -2s P_nested.
+     */
+    static double
+    objective_scale(const NestedCoefficients &coefficients, const bool scaled);
 
     /**
      * A two-block vector (U, V) in the layout of the DoFs, zero.

@@ -329,6 +329,32 @@ namespace PhaseField
     void
     inner_residual(const Vector &u, const Vector &v, Vector &r) const;
 
+    /**
+     * @p g += @p factor tau eta (L U + M Psi'(U) / (2 eps^2)): the gradient
+     * of the area term tau eta a_eps[U] / eps of outer_energy() (edge
+     * restoration, the U-row of R); nothing without an area weight.
+     */
+    void
+    add_area_gradient(const Vector &u, const double factor, Vector &g) const;
+
+    /**
+     * @p y += @p factor tau eta (L d + M[Psi''(U)] d / (2 eps^2)): the
+     * Hessian of the same area term applied to @p d (matrix-free);
+     * nothing without an area weight.
+     */
+    void
+    add_area_hessian_vmult(const Vector &u,
+                           const Vector &d,
+                           const double  factor,
+                           Vector       &y) const;
+
+    /**
+     * Set @p u_block to 0 at the DoFs of OuterEnergy::fixed_u (a gradient
+     * or a direction in U that must leave the fixed values unchanged).
+     */
+    void
+    zero_fixed_u(Vector &u_block) const;
+
     /** K(V) - shift M = M[k_weight] + ttau L. */
     void
     build_k(const Vector                           &v,
