@@ -273,13 +273,27 @@ namespace PhaseField
                                                 const double w,
                                                 const double m)
   {
+    // U is eliminated at its free DoFs only: at a fixed one, Khat has no
+    // shift b, w = lambda and m = s a (class documentation)
+    Vector free(ops.lumped_mass);
+    free = 1;
+    nested_step.zero_fixed_u(free);
+    const auto nodal = [&](const double at_free, const double at_fixed) {
+      Vector values(free);
+      values *= at_free - at_fixed;
+      values.add(at_fixed);
+      return values;
+    };
     TrilinosWrappers::SparseMatrix k_hat;
-    nested_step.build_k(schur_v, b, k_hat);
-    Vector weight(ops.inverse_lumped_mass);
-    weight *= w;
+    nested_step.build_k(schur_v, 0., k_hat);
+    Vector shift = nodal(-b, 0.);
+    shift.scale(ops.lumped_mass);
+    ops.add_to_diagonal(shift, k_hat);
+    Vector weight = nodal(w, schur_penalty);
+    weight.scale(ops.inverse_lumped_mass);
     k_hat.mmult(schur, k_hat, weight);
-    Vector diagonal(ops.lumped_mass);
-    diagonal *= m;
+    Vector diagonal = nodal(m, f_scale * weights.a);
+    diagonal.scale(ops.lumped_mass);
     ops.add_to_diagonal(diagonal, schur);
     schur_solver->reset();
     schur_solver->set_constant_matrix(true);

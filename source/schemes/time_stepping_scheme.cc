@@ -27,10 +27,6 @@ namespace PhaseField
                                                            discretization,
                                                            pcout);
         case Scheme::augmented_lagrangian:
-          if (settings.outer_energy.has_restoration_terms())
-            throw InputError(
-              "<Time stepping / Scheme> = augmented lagrangian has no area "
-              "term or fixed values: use Scheme = nested.");
           return std::make_unique<AugmentedLagrangianScheme<dim>>(
             settings, discretization, pcout);
       }
