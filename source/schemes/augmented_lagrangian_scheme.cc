@@ -506,7 +506,8 @@ namespace PhaseField
     report.final_residual_norm = std::max(al.gradient_norm, al.constraint_norm);
     if (al.converged)
       next_penalty =
-        std::max(al.final_penalty / AugmentedLagrangian::next_step_reduction,
+        std::max(al.final_penalty /
+                   settings.augmented_lagrangian.penalty_reduction,
                  settings.augmented_lagrangian.initial_penalty);
     else
       pcout << "  augmented Lagrangian: no convergence after "

@@ -182,6 +182,11 @@ namespace PhaseField
     double constraint_tolerance = 1e-8;
     /** lambda0: the penalty of the first step (later steps: see scheme). */
     double initial_penalty = 10;
+    /**
+     * Each later step starts from max(lambda_final / this, lambda0)
+     * (thesis: 100^2).
+     */
+    double penalty_reduction = 1e4;
     /** P0: the multiplier at every node at the start of the run. */
     double initial_multiplier = 0.1;
     /** true: the outer energy divided by epsilon (thesis (7.9)). */

@@ -209,8 +209,9 @@ namespace PhaseField
    * P the multiplier of the augmented Lagrangian, one
    * augmented_lagrangian_minimize() of an AugmentedLagrangianStep per time
    * step, warm-started from the last state. The penalty starts at
-   * `Initial penalty` and each later step at max(lambda_final / 100^2,
-   * Initial penalty); reset_solver() resets it. Initialisation, energies,
+   * `Initial penalty` and each later step at max(lambda_final /
+   * `Penalty reduction per step`, `Initial penalty`); reset_solver()
+   * resets it. Initialisation, energies,
    * curvature and the energy law are those of NestedScheme (the same
    * discrete problem), except that P starts at `Initial multiplier`.
    */

@@ -185,11 +185,6 @@ namespace PhaseField
     constexpr double eta_exponent = 0.1;
     /** eta <- eta / lambda^eta_decay_exponent after a multiplier update. */
     constexpr double eta_decay_exponent = 0.9;
-    /**
-     * The next time step starts from max(lambda_final / next_step_reduction,
-     * lambda0) (thesis: 100^2).
-     */
-    constexpr double next_step_reduction = 1e4;
   } // namespace AugmentedLagrangian
 } // namespace PhaseField
 
