@@ -46,9 +46,7 @@ namespace PhaseField
   LinearSolver::factorize(const TrilinosWrappers::SparseMatrix &matrix)
   {
     Assert(solver_type == LinearSolverType::direct, ExcInternalError());
-    factorization =
-      std::make_unique<DirectFactorization>(matrix, pivoting_workspace_percent);
-    ++factorization_count;
+    factorize_for_solve(matrix);
   }
 
 

@@ -66,7 +66,10 @@ namespace PhaseField
 
     /**
      * Factorise @p matrix now (direct type): with set_constant_matrix(),
-     * every following solve() applies this factorisation once.
+     * every following solve() applies this factorisation once. A matrix
+     * with the sparsity pattern of the one factorised before reuses
+     * MUMPS's analysis (DirectFactorization::refactorize()); reset()
+     * forgets it.
      */
     void
     factorize(const dealii::TrilinosWrappers::SparseMatrix &matrix);
