@@ -486,41 +486,98 @@ namespace PhaseField
                                       settings.augmented_lagrangian.scaled);
     if (schur_solver)
       step.set_schur_solver(*schur_solver);
-    BlockVector x = step.make_point();
-    x.block(0)    = state.block(Field::U);
-    x.block(1)    = state.block(Field::V);
-    Vector                          p(state.block(Field::P));
-    const AugmentedLagrangianReport al = augmented_lagrangian_minimize(
-      step, x, p, control(), pcout, settings.verbose);
+    BlockVector start = step.make_point();
+    start.block(0)    = state.block(Field::U);
+    start.block(1)    = state.block(Field::V);
+    const double start_value = step.objective(start);
+
+    // Algorithm 2.1 is not monotone: at a small penalty the first
+    // subproblems may leave the constraint set and the outer loop return
+    // to a critical point of higher outer energy. Then the step is
+    // repeated from the same start with a penalty penalty_growth times
+    // larger, which keeps the iterates nearer the constraint set.
+    StepReport  report;
+    BlockVector x = start;
+    Vector      p(state.block(Field::P));
+    AugmentedLagrangianControl control_now = control();
+    for (unsigned int attempt = 0;; ++attempt)
+      {
+        x = start;
+        p = state.block(Field::P);
+        const AugmentedLagrangianReport al = augmented_lagrangian_minimize(
+          step, x, p, control_now, pcout, settings.verbose);
+        add_to_report(al, report);
+        const bool rises =
+          al.converged && step.objective(x) - start_value >
+                            AugmentedLagrangian::monotonicity_tolerance *
+                              std::abs(start_value);
+        if (!al.converged || !rises)
+          {
+            report.converged = al.converged;
+            if (al.converged)
+              next_penalty =
+                std::max(al.final_penalty /
+                           settings.augmented_lagrangian.penalty_reduction,
+                         settings.augmented_lagrangian.initial_penalty);
+            else
+              report_failure(al);
+            break;
+          }
+        if (attempt == AugmentedLagrangian::max_monotonicity_retries)
+          {
+            pcout << "  augmented Lagrangian: the step ends above the outer "
+                     "energy of its start also with the penalty "
+                  << control_now.initial_penalty
+                  << "; the step is halved." << std::endl;
+            report.converged = false;
+            break;
+          }
+        control_now.initial_penalty *= AugmentedLagrangian::penalty_growth;
+        if (settings.verbose)
+          pcout << "    the outer energy rose from " << start_value << " to "
+                << step.objective(x) << ": step repeated with lambda0 = "
+                << control_now.initial_penalty << std::endl;
+      }
     state.block(Field::U) = x.block(0);
     state.block(Field::V) = x.block(1);
     state.block(Field::P) = p;
     preconditioner_setups += step.n_setups();
-
-    StepReport report;
-    report.converged         = al.converged;
-    report.newton_iterations = al.tr_iterations;
-    report.linear_iterations = al.cg_iterations;
-    report.al_iterations     = al.outer_iterations;
-    report.tr_iterations     = al.tr_iterations;
-    report.initial_residual_norm =
-      std::max(al.initial_gradient_norm, al.initial_constraint_norm);
-    report.final_residual_norm = std::max(al.gradient_norm, al.constraint_norm);
-    if (al.converged)
-      next_penalty =
-        std::max(al.final_penalty /
-                   settings.augmented_lagrangian.penalty_reduction,
-                 settings.augmented_lagrangian.initial_penalty);
-    else
-      pcout << "  augmented Lagrangian: no convergence after "
-            << al.outer_iterations << " outer and " << al.tr_iterations
-            << " trust-region iterations (|grad l_A| = " << al.gradient_norm
-            << ", |C| = " << al.constraint_norm
-            << "); raise <Augmented Lagrangian / Maximum outer iterations>, "
-               "<Maximum trust-region iterations>, <Maximum CG iterations> "
-               "or lower <Time stepping / Tau>."
-            << std::endl;
     return report;
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianScheme<dim>::add_to_report(
+    const AugmentedLagrangianReport &al,
+    StepReport                      &report)
+  {
+    report.newton_iterations += al.tr_iterations;
+    report.linear_iterations += al.cg_iterations;
+    report.al_iterations += al.outer_iterations;
+    report.tr_iterations += al.tr_iterations;
+    if (report.initial_residual_norm == 0)
+      report.initial_residual_norm =
+        std::max(al.initial_gradient_norm, al.initial_constraint_norm);
+    report.final_residual_norm = std::max(al.gradient_norm, al.constraint_norm);
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangianScheme<dim>::report_failure(
+    const AugmentedLagrangianReport &al) const
+  {
+    pcout << "  augmented Lagrangian: no convergence after "
+          << al.outer_iterations << " outer and " << al.tr_iterations
+          << " trust-region iterations (|grad l_A| = " << al.gradient_norm
+          << ", |C| = " << al.constraint_norm
+          << "); raise <Augmented Lagrangian / Maximum outer iterations>, "
+             "<Maximum trust-region iterations>, <Maximum CG iterations> "
+             "or lower <Time stepping / Tau>."
+          << std::endl;
   }
 
 

@@ -208,7 +208,13 @@ namespace PhaseField
    * `Time stepping / Scheme = augmented lagrangian`: state (U, V, P) with
    * P the multiplier of the augmented Lagrangian, one
    * augmented_lagrangian_minimize() of an AugmentedLagrangianStep per time
-   * step, warm-started from the last state. The penalty starts at
+   * step, warm-started from the last state. A step whose result has a
+   * higher outer energy than its start (more than
+   * AugmentedLagrangian::monotonicity_tolerance relative) is repeated from
+   * the start with the start penalty times penalty_growth, at most
+   * AugmentedLagrangian::max_monotonicity_retries times, and then
+   * reported as not converged (the time loop halves it). The penalty
+   * starts at
    * `Initial penalty` and each later step at max(lambda_final /
    * `Penalty reduction per step`, `Initial penalty`); reset_solver()
    * resets it. Initialisation, energies,
@@ -277,6 +283,14 @@ namespace PhaseField
     /** The control of augmented_lagrangian_minimize() from the settings. */
     AugmentedLagrangianControl
     control() const;
+
+    /** Add the iterations of @p al to @p report, and its residuals. */
+    static void
+    add_to_report(const AugmentedLagrangianReport &al, StepReport &report);
+
+    /** The message of a step whose outer loop did not converge. */
+    void
+    report_failure(const AugmentedLagrangianReport &al) const;
 
     const SchemeSettings              settings;
     const Discretization<dim>        &discretization;

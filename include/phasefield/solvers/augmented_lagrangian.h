@@ -185,6 +185,17 @@ namespace PhaseField
     constexpr double eta_exponent = 0.1;
     /** eta <- eta / lambda^eta_decay_exponent after a multiplier update. */
     constexpr double eta_decay_exponent = 0.9;
+    /**
+     * A step of the augmented-Lagrangian scheme whose outer energy ends
+     * higher than at its start by more than this, relative, is repeated
+     * with a larger penalty. The outer energy's round-off at the end of a
+     * step is about eta* / ttau relative (the curvature (U-V)/ttau carries
+     * ||C||): measured rises at stationary states 7e-6; the rises this
+     * guards against were 0.3-0.5 (relative).
+     */
+    constexpr double monotonicity_tolerance = 1e-3;
+    /** Repetitions of a step with a rising outer energy. */
+    constexpr unsigned int max_monotonicity_retries = 2;
   } // namespace AugmentedLagrangian
 } // namespace PhaseField
 
