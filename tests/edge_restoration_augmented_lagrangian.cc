@@ -52,23 +52,24 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string>                 header;
-  const auto nested = Testing::run_restoration(damaged_circle + "end\n", header);
-  const auto rows   = Testing::run_restoration(
+  const auto                               nested =
+    Testing::run_restoration(damaged_circle + "end\n", header);
+  const auto rows = Testing::run_restoration(
     damaged_circle + "  set Scheme = augmented lagrangian\nend\n", header);
   Testing::check_restoration_table(rows, header);
 
-  const int    energy     = Testing::column(header, "weighted_energy");
-  const double difference = std::max(
-    std::abs(rows[1][energy] / nested[1][energy] - 1),
-    std::abs(rows[2][energy] / nested[2][energy] - 1));
+  const int    energy = Testing::column(header, "weighted_energy");
+  const double difference =
+    std::max(std::abs(rows[1][energy] / nested[1][energy] - 1),
+             std::abs(rows[2][energy] / nested[2][energy] - 1));
   Testing::log() << "weighted energy of steps 1, 2 equal to the nested "
                     "scheme's to 1e-6: "
                  << (difference < 1e-6 ? "yes" : "NO") << std::endl;
   if (!(difference < 1e-6))
     Testing::log() << "  relative difference " << difference << std::endl;
 
-  const int tr = Testing::column(header, "tr_iterations");
-  const int cg = Testing::column(header, "linear_iterations");
+  const int tr        = Testing::column(header, "tr_iterations");
+  const int cg        = Testing::column(header, "linear_iterations");
   double    cg_per_tr = 0;
   for (unsigned int i = 1; i < rows.size(); ++i)
     cg_per_tr = std::max(cg_per_tr, rows[i][cg] / rows[i][tr]);

@@ -486,9 +486,9 @@ namespace PhaseField
                                       settings.augmented_lagrangian.scaled);
     if (schur_solver)
       step.set_schur_solver(*schur_solver);
-    BlockVector start = step.make_point();
-    start.block(0)    = state.block(Field::U);
-    start.block(1)    = state.block(Field::V);
+    BlockVector start        = step.make_point();
+    start.block(0)           = state.block(Field::U);
+    start.block(1)           = state.block(Field::V);
     const double start_value = step.objective(start);
 
     // Algorithm 2.1 is not monotone: at a small penalty the first
@@ -496,21 +496,21 @@ namespace PhaseField
     // to a critical point of higher outer energy. Then the step is
     // repeated from the same start with a penalty penalty_growth times
     // larger, which keeps the iterates nearer the constraint set.
-    StepReport  report;
-    BlockVector x = start;
-    Vector      p(state.block(Field::P));
+    StepReport                 report;
+    BlockVector                x = start;
+    Vector                     p(state.block(Field::P));
     AugmentedLagrangianControl control_now = control();
     for (unsigned int attempt = 0;; ++attempt)
       {
-        x = start;
-        p = state.block(Field::P);
+        x                                  = start;
+        p                                  = state.block(Field::P);
         const AugmentedLagrangianReport al = augmented_lagrangian_minimize(
           step, x, p, control_now, pcout, settings.verbose);
         add_to_report(al, report);
         const bool rises =
-          al.converged && step.objective(x) - start_value >
-                            AugmentedLagrangian::monotonicity_tolerance *
-                              std::abs(start_value);
+          al.converged &&
+          step.objective(x) - start_value >
+            AugmentedLagrangian::monotonicity_tolerance * std::abs(start_value);
         if (!al.converged || !rises)
           {
             report.converged = al.converged;
@@ -527,8 +527,8 @@ namespace PhaseField
           {
             pcout << "  augmented Lagrangian: the step ends above the outer "
                      "energy of its start also with the penalty "
-                  << control_now.initial_penalty
-                  << "; the step is halved." << std::endl;
+                  << control_now.initial_penalty << "; the step is halved."
+                  << std::endl;
             report.converged = false;
             break;
           }

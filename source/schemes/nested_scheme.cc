@@ -161,8 +161,7 @@ namespace PhaseField
     const unsigned int n     = u.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       g.begin()[i] +=
-        scale *
-        (l_u.begin()[i] + c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
+        scale * (l_u.begin()[i] + c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
   }
 
 
@@ -183,10 +182,9 @@ namespace PhaseField
     const double      *m     = ops.lumped_mass.begin();
     const unsigned int n     = u.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
-      y.begin()[i] += scale * (l_d.begin()[i] + c_u * m[i] *
-                                                  DoubleWell::d2_psi(
-                                                    u.begin()[i]) *
-                                                  d.begin()[i]);
+      y.begin()[i] +=
+        scale * (l_d.begin()[i] +
+                 c_u * m[i] * DoubleWell::d2_psi(u.begin()[i]) * d.begin()[i]);
   }
 
 
