@@ -191,7 +191,7 @@ namespace PhaseField
      * with a larger penalty. The outer energy's round-off at the end of a
      * step is about eta* / ttau relative (the curvature (U-V)/ttau carries
      * ||C||): measured rises at stationary states 7e-6; the rises this
-     * guards against were 0.3-0.5 (relative).
+     * guards against were 0.09-0.5 (relative).
      */
     constexpr double monotonicity_tolerance = 1e-3;
     /** Repetitions of a step with a rising outer energy. */
