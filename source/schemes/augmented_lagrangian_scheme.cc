@@ -497,19 +497,23 @@ namespace PhaseField
     // repeated from the same start with a penalty penalty_growth times
     // larger, which keeps the iterates nearer the constraint set.
     StepReport                 report;
-    BlockVector                x = start;
+    BlockVector                x(start);
     Vector                     p(state.block(Field::P));
     AugmentedLagrangianControl control_now = control();
     for (unsigned int attempt = 0;; ++attempt)
       {
-        x                                  = start;
-        p                                  = state.block(Field::P);
+        if (attempt > 0)
+          {
+            x = start;
+            p = state.block(Field::P);
+          }
         const AugmentedLagrangianReport al = augmented_lagrangian_minimize(
           step, x, p, control_now, pcout, settings.verbose);
         add_to_report(al, report);
-        const bool rises =
+        const double end_value = al.converged ? step.objective(x) : 0.;
+        const bool   rises =
           al.converged &&
-          step.objective(x) - start_value >
+          end_value - start_value >
             AugmentedLagrangian::monotonicity_tolerance * std::abs(start_value);
         if (!al.converged || !rises)
           {
@@ -535,7 +539,7 @@ namespace PhaseField
         control_now.initial_penalty *= AugmentedLagrangian::penalty_growth;
         if (settings.verbose)
           pcout << "    the outer energy rose from " << start_value << " to "
-                << step.objective(x) << ": step repeated with lambda0 = "
+                << end_value << ": step repeated with lambda0 = "
                 << control_now.initial_penalty << std::endl;
       }
     state.block(Field::U) = x.block(0);

@@ -146,22 +146,38 @@ namespace PhaseField
 
 
   template <int dim>
+  template <typename NodalPotential>
+  void
+  NestedStep<dim>::add_area_term(const Vector         &x,
+                                 const double          factor,
+                                 const NodalPotential &potential,
+                                 Vector               &y) const
+  {
+    if (coeff.outer.area_weight == 0)
+      return;
+    Vector l_x(x);
+    ops.stiffness.vmult(l_x, x);
+    const double       scale = factor * weights.area_factor;
+    const double       c_u   = weights.area_potential_factor;
+    const double      *m     = ops.lumped_mass.begin();
+    const unsigned int n     = x.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      y.begin()[i] += scale * (l_x.begin()[i] + c_u * m[i] * potential(i));
+  }
+
+
+
+  template <int dim>
   void
   NestedStep<dim>::add_area_gradient(const Vector &u,
                                      const double  factor,
                                      Vector       &g) const
   {
-    if (coeff.outer.area_weight == 0)
-      return;
-    Vector l_u(u);
-    ops.stiffness.vmult(l_u, u);
-    const double       scale = factor * weights.area_factor;
-    const double       c_u   = weights.area_potential_factor;
-    const double      *m     = ops.lumped_mass.begin();
-    const unsigned int n     = u.locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      g.begin()[i] +=
-        scale * (l_u.begin()[i] + c_u * m[i] * DoubleWell::d_psi(u.begin()[i]));
+    add_area_term(
+      u,
+      factor,
+      [&](const unsigned int i) { return DoubleWell::d_psi(u.begin()[i]); },
+      g);
   }
 
 
@@ -173,18 +189,13 @@ namespace PhaseField
                                           const double  factor,
                                           Vector       &y) const
   {
-    if (coeff.outer.area_weight == 0)
-      return;
-    Vector l_d(d);
-    ops.stiffness.vmult(l_d, d);
-    const double       scale = factor * weights.area_factor;
-    const double       c_u   = weights.area_potential_factor;
-    const double      *m     = ops.lumped_mass.begin();
-    const unsigned int n     = u.locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      y.begin()[i] +=
-        scale * (l_d.begin()[i] +
-                 c_u * m[i] * DoubleWell::d2_psi(u.begin()[i]) * d.begin()[i]);
+    add_area_term(
+      d,
+      factor,
+      [&](const unsigned int i) {
+        return DoubleWell::d2_psi(u.begin()[i]) * d.begin()[i];
+      },
+      y);
   }
 
 

@@ -483,6 +483,18 @@ namespace PhaseField
     bool
     u_is_fixed(const unsigned int i) const;
 
+    /**
+     * @p y += @p factor tau eta (L @p x + M p / (2 eps^2)) with the nodal
+     * values p_i = @p potential(i): the one loop of add_area_gradient()
+     * (x = U, p = Psi'(U)) and add_area_hessian_vmult() (x = d,
+     * p = Psi''(U) d); nothing without an area weight.
+     */
+    template <typename NodalPotential>
+    void
+    add_area_term(const Vector         &x,
+                  const double          factor,
+                  const NodalPotential &potential,
+                  Vector               &y) const;
 
     /** The nodal weights k_weight(V, shift) of K(V) - shift M. */
     Vector
