@@ -19,23 +19,7 @@
 
 namespace
 {
-  const std::string damaged_circle = R"(
-set Dimension = 2
-subsection Geometry
-  set Shape  = damaged circle
-  set Center = 0.5, 0
-  set Radius = 0.45
-end
-subsection Restoration
-  set Eta    = 1
-  set Region = 0.25, 0.25, 0.75, 0.75
-  set Damage = 0.375, 0.3, 0.625, 0.6
-  set Picture resolution = 64
-end
-subsection Mesh
-  set Finest level = 6
-  set Coarsest level = 3
-end
+  const std::string damaged_circle = Testing::damaged_circle_restoration + R"(
 subsection Phase field
   set Epsilon = 4*h
 end

@@ -16,23 +16,8 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string>                 header;
-  const auto                               rows = Testing::run_restoration(R"(
-set Dimension = 2
-subsection Geometry
-  set Shape  = damaged circle
-  set Center = 0.5, 0
-  set Radius = 0.45
-end
-subsection Restoration
-  set Eta    = 1
-  set Region = 0.25, 0.25, 0.75, 0.75
-  set Damage = 0.375, 0.3, 0.625, 0.6
-  set Picture resolution = 64
-end
-subsection Mesh
-  set Finest level = 6
-  set Coarsest level = 3
-end
+  const auto                               rows =
+    Testing::run_restoration(Testing::damaged_circle_restoration + R"(
 subsection Phase field
   set Epsilon = 4*h
 end
@@ -45,7 +30,7 @@ subsection Output
   set VTU interval = 0
 end
 )",
-                                             header);
+                             header);
   Testing::check_restoration_table(rows, header);
 
   // the first step fills the damage: W + eta A falls to well below half of

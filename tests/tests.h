@@ -167,6 +167,31 @@ namespace Testing
 namespace Testing
 {
   /**
+   * The damaged circle of thesis Fig. 5.6 on a small adaptive mesh (level
+   * 6, eta = 1, 64-pixel pictures): the input of edge_restoration_circle,
+   * edge_restoration_augmented_lagrangian and checkpoint_restoration, which
+   * add their time stepping and output.
+   */
+  inline const std::string damaged_circle_restoration = R"(
+set Dimension = 2
+subsection Geometry
+  set Shape  = damaged circle
+  set Center = 0.5, 0
+  set Radius = 0.45
+end
+subsection Restoration
+  set Eta    = 1
+  set Region = 0.25, 0.25, 0.75, 0.75
+  set Damage = 0.375, 0.3, 0.625, 0.6
+  set Picture resolution = 64
+end
+subsection Mesh
+  set Finest level = 6
+  set Coarsest level = 3
+end
+)";
+
+  /**
    * Run edge_restoration on the parameters in @p prm_text (output
    * directory "results") and return the rows of statistics.csv.
    */
