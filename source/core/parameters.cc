@@ -338,9 +338,9 @@ namespace PhaseField
       Patterns::Double(1),
       "Each step after the first starts from the final penalty of the "
       "previous step divided by this, but not below lambda0 (thesis: "
-      "100^2). Measured (doc/willmore_flow.md): 100 needs 2-3 times fewer "
-      "trust-region iterations per step than 100^2 on the quarter circle "
-      "and on edge restoration.");
+      "100^2). Measured (doc/willmore_flow.md, \"Penalty per step\"): 10 "
+      "needs about 3 times fewer trust-region iterations per step than "
+      "100^2 on the level-7 quarter circle and edge-restoration cross.");
     prm.declare_entry("Initial multiplier",
                       text(defaults.initial_multiplier),
                       Patterns::Double(),
