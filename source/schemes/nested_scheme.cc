@@ -751,10 +751,15 @@ namespace PhaseField
                                           LinearSolver      &solver,
                                           const double       shift)
   {
-    AssertThrow(coeff.outer.has_restoration_terms(),
-                ExcMessage("The shifted Newton system is that of the outer "
-                           "energy with restoration terms."));
-    return solve_full_system(z, r, dz, solver, shift);
+    if (coeff.outer.has_restoration_terms())
+      return solve_full_system(z, r, dz, solver, shift);
+    // the shift enters the U-U block, (1 + a + shift) M, which the
+    // elimination keeps exactly (build_reduced_matrices())
+    ReducedMatrices  local;
+    ReducedMatrices &matrices =
+      mesh_matrices != nullptr ? *mesh_matrices : local;
+    build_reduced_matrices(z, matrices, solver.type(), shift);
+    return solve_reduced_system(matrices, r, dz, solver);
   }
 
 
@@ -1036,36 +1041,35 @@ namespace PhaseField
     // a linear system is solved once to the solver's tolerance, not
     // loosely first as inexact Newton does
     control.adapt_linear_tolerance = !linear_model();
-    if (!settings.outer_energy.has_restoration_terms())
+    if (linear_model())
       return newton_solve(
         step, state, control, *linear_solver, pcout, settings.verbose);
-    // With an area term and all U free (the contour problem), Newton's
-    // method with residual damping first: it converged to the same states
-    // as the descent method below (statistics equal to the Newton
-    // tolerance; fig6_5_disc.prm, 10 level-6 steps) in 2.0 s instead of
-    // 5.8 s of user time, because it needs no inner problems. Where it
-    // fails, the descent method starts again from the same state; the
-    // first step after initialize() takes the descent method directly
-    // (descent_next_step).
-    if (settings.outer_energy.fixed_u == nullptr &&
-        !std::exchange(descent_next_step, false))
-      {
-        const BlockVector start(state);
-        const StepReport  newton = newton_solve(
-          step, state, control, *linear_solver, pcout, settings.verbose);
-        if (newton.converged)
-          return newton;
-        if (settings.verbose)
-          pcout << "    Newton's method failed: the descent method from the "
-                   "start of the step"
-                << std::endl;
-        state              = start;
-        StepReport descent = descent_solve(step, state, control);
-        descent.newton_iterations += newton.newton_iterations;
-        descent.linear_iterations += newton.linear_iterations;
-        return descent;
-      }
-    return descent_solve(step, state, control);
+    // With U fixed outside a region (edge restoration), and in the first
+    // step after initialize() with an area term (descent_next_step), the
+    // descent method directly. Otherwise Newton's method with residual
+    // damping first: it needs no inner problems (fig6_5_disc.prm, 10
+    // level-6 steps: the same states to the Newton tolerance in 2.0 s
+    // instead of 5.8 s of user time). Where it fails, the descent method
+    // starts again from the same state before the step is halved: the
+    // nested step is the minimiser of the outer energy, which the descent
+    // method lowers at every iteration (the level-7 cube, whose full
+    // first step Newton's method could not take).
+    if (settings.outer_energy.fixed_u != nullptr ||
+        std::exchange(descent_next_step, false))
+      return descent_solve(step, state, control);
+    const BlockVector start(state);
+    const StepReport  newton = newton_solve(
+      step, state, control, *linear_solver, pcout, settings.verbose);
+    if (newton.converged)
+      return newton;
+    pcout << "    Newton's method failed: the descent method from the "
+             "start of the step"
+          << std::endl;
+    state              = start;
+    StepReport descent = descent_solve(step, state, control);
+    descent.newton_iterations += newton.newton_iterations;
+    descent.linear_iterations += newton.linear_iterations;
+    return descent;
   }
 
 

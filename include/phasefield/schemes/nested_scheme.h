@@ -238,7 +238,7 @@ namespace PhaseField
     distribute_constraints(BlockVector &z) const override;
     /** @} */
 
-    /** @name MinimizationProblem (edge restoration) */
+    /** @name MinimizationProblem (the descent method of NestedScheme) */
     /** @{ */
     /**
      * V and P re-solved for the U of @p z (solve_inner_problem() to
@@ -246,7 +246,10 @@ namespace PhaseField
      */
     double
     project_and_energy(BlockVector &z) override;
-    /** The 3-field solve with mu M added to the UU block. */
+    /**
+     * The Newton system with mu M added to the UU block: the 3-field
+     * solve with restoration terms, the elimination otherwise.
+     */
     unsigned int
     solve_shifted_jacobian(const BlockVector &z,
                            const BlockVector &r,
