@@ -7,9 +7,11 @@
 # for V at step 0 (a limit of 6 makes that one fail; with a coarsest
 # multigrid level of at most 200 unknowns, the AMG of this 2D level-5 mesh
 # is no longer a direct solve): step 1 must be tried
-# at tau, tau/2 and tau/4, each attempt reporting "the linear solver
-# failed", and the run must then stop with the documented message and exit
-# status 1, within 60 s, with statistics.csv complete up to step 0.
+# at tau, tau/2 and tau/4; in each attempt Newton's method reports "the
+# linear solver failed", the descent method takes over from the start of
+# the step and reports it too; the run must then stop with the documented
+# message and exit status 1, within 60 s, with statistics.csv complete up
+# to step 0.
 ranks="$1"; mpiexec="$2"; program="$3"; directory="$4"
 time_limit=60
 expected_status=1
@@ -34,8 +36,12 @@ fail() { echo "FAIL on $ranks rank(s): $1"; echo "$output"; exit 1; }
 [ $status -eq $expected_status ] ||
   fail "exit status $status (expected $expected_status)"
 failures=$(printf '%s\n' "$output" | grep -c "the linear solver failed")
-[ "$failures" -eq 3 ] ||
-  fail "\"the linear solver failed\" printed $failures times (expected 3)"
+[ "$failures" -eq 6 ] ||
+  fail "\"the linear solver failed\" printed $failures times (expected 6)"
+fallbacks=$(printf '%s\n' "$output" |
+  grep -c "Newton's method failed: the descent method from the start of the step")
+[ "$fallbacks" -eq 3 ] ||
+  fail "the descent method took over $fallbacks times (expected 3)"
 for tau in 0.000488 0.000244; do
   printf '%s\n' "$output" | grep -q \
     "step 1: the solver of the nested scheme did not converge, retrying with half the time step, tau = $tau" ||
