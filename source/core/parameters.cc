@@ -559,6 +559,15 @@ namespace PhaseField
                       Patterns::Integer(0),
                       "How often a failed time step is retried with half "
                       "the outer step before the program stops.");
+    prm.declare_entry(
+      "Maximum descent iterations",
+      "60",
+      Patterns::Integer(1),
+      "Nested scheme: where Newton's method fails, the descent method "
+      "(Newton's method on the outer energy, every iterate lowering it) "
+      "takes the step again from its start, with at most this many "
+      "iterations, before the step is halved. Edge restoration, which "
+      "takes every step with the descent method, uses Maximum iterations.");
     prm.leave_subsection();
   }
 
@@ -568,12 +577,13 @@ namespace PhaseField
   NewtonParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Newton");
-    relative_tolerance = prm.get_double("Tolerance");
-    absolute_tolerance = prm.get_double("Absolute tolerance");
-    max_iterations     = prm.get_integer("Maximum iterations");
-    max_damping_steps  = prm.get_integer("Maximum damping steps");
-    max_step_halvings  = prm.get_integer("Maximum step halvings");
-    watchdog_factor    = prm.get_double("Watchdog factor");
+    relative_tolerance     = prm.get_double("Tolerance");
+    absolute_tolerance     = prm.get_double("Absolute tolerance");
+    max_iterations         = prm.get_integer("Maximum iterations");
+    max_damping_steps      = prm.get_integer("Maximum damping steps");
+    max_step_halvings      = prm.get_integer("Maximum step halvings");
+    watchdog_factor        = prm.get_double("Watchdog factor");
+    max_descent_iterations = prm.get_integer("Maximum descent iterations");
     prm.leave_subsection();
   }
 

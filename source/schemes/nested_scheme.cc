@@ -1065,8 +1065,10 @@ namespace PhaseField
     pcout << "    Newton's method failed: the descent method from the "
              "start of the step"
           << std::endl;
-    state              = start;
-    StepReport descent = descent_solve(step, state, control);
+    state = start;
+    NewtonControl descent_control(control);
+    descent_control.max_iterations = settings.newton.max_descent_iterations;
+    StepReport descent = descent_solve(step, state, descent_control);
     descent.newton_iterations += newton.newton_iterations;
     descent.linear_iterations += newton.linear_iterations;
     return descent;

@@ -275,6 +275,11 @@ namespace PhaseField
     double watchdog_factor;
     /** How often a failed time step may be retried with half the step. */
     unsigned int max_step_halvings;
+    /**
+     * Iterations of the descent method that takes a step from its start
+     * where Newton's method failed (nested scheme without fixed U).
+     */
+    unsigned int max_descent_iterations;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
