@@ -563,11 +563,12 @@ namespace PhaseField
       "Maximum descent iterations",
       "60",
       Patterns::Integer(1),
-      "Nested scheme: where Newton's method fails, the descent method "
-      "(Newton's method on the outer energy, every iterate lowering it) "
-      "takes the step again from its start, with at most this many "
-      "iterations, before the step is halved. Edge restoration, which "
-      "takes every step with the descent method, uses Maximum iterations.");
+      "Nested scheme: where Newton's method fails in the first step from "
+      "the initial data, the descent method (Newton's method on the outer "
+      "energy, every iterate lowering it) takes the step again from its "
+      "start, with at most this many iterations, before the step is "
+      "halved. Edge restoration, which takes every step with the descent "
+      "method, uses Maximum iterations.");
     prm.leave_subsection();
   }
 

@@ -655,14 +655,16 @@ namespace PhaseField
      */
     std::unique_ptr<typename NestedStep<dim>::ReducedMatrices> mesh_matrices;
     /**
-     * Take the descent method directly in the next step (area term, all U
-     * free): set by initialize(), whose state (the start of a run, or a
-     * level transition of the contour problem with the U of the coarser
-     * epsilon) is far from the nested step's equilibrium. In the Fig. 6.5
-     * run Newton's method failed in the first step of levels 8 and 9
-     * (W = 2862 and 11405 at their start, 11.5 after the step).
+     * The next step is the first after initialize(), whose state (the
+     * sampled initial shape, or a level transition of the contour problem
+     * with the U of the coarser epsilon) is far from the nested step's
+     * equilibrium. With restoration terms (area term, all U free) it is
+     * taken by the descent method directly: in the Fig. 6.5 run Newton's
+     * method failed in the first step of levels 8 and 9 (W = 2862 and
+     * 11405 at their start, 11.5 after the step). Without, the descent
+     * method takes over where Newton's method fails in it.
      */
-    bool descent_next_step = false;
+    bool first_step_from_initial_data = false;
   };
 } // namespace PhaseField
 
