@@ -560,6 +560,18 @@ namespace PhaseField
                       "How often a failed time step is retried with half "
                       "the outer step before the program stops.");
     prm.declare_entry(
+      "Regrow step size",
+      "false",
+      Patterns::Bool(),
+      "false: every step first tries its scheduled size (Tau, or the "
+      "ramp-up size), the thesis's time grid. true: after a step that "
+      "needed halvings, the next step starts from the size that "
+      "converged, and each step taken without halving lets the next one "
+      "double, up to the scheduled size. Where the scheduled size fails "
+      "in many consecutive steps, this saves one failed attempt (up to "
+      "Maximum iterations Newton iterations) per step; Number of steps "
+      "then covers a shorter time.");
+    prm.declare_entry(
       "Maximum descent iterations",
       "60",
       Patterns::Integer(1),
@@ -583,6 +595,7 @@ namespace PhaseField
     max_iterations         = prm.get_integer("Maximum iterations");
     max_damping_steps      = prm.get_integer("Maximum damping steps");
     max_step_halvings      = prm.get_integer("Maximum step halvings");
+    regrow_step_size       = prm.get_bool("Regrow step size");
     watchdog_factor        = prm.get_double("Watchdog factor");
     max_descent_iterations = prm.get_integer("Maximum descent iterations");
     prm.leave_subsection();

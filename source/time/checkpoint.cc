@@ -80,6 +80,7 @@ namespace PhaseField
             << "problem_data " << state.problem_data.size() << '\n';
         for (const double value : state.problem_data)
           out << value << '\n';
+        out << "step_size_limit " << state.step_size_limit << '\n';
         return out.str();
       }
 
@@ -108,8 +109,11 @@ namespace PhaseField
         state.problem_data.resize(in ? n_data : 0);
         for (double &value : state.problem_data)
           in >> value;
-        if (!in || key[0] != "step" || key[4] != "pvd_records" ||
-            tail_key[0] != "step_offset" || tail_key[2] != "problem_data")
+        std::string limit_key;
+        in >> limit_key >> state.step_size_limit;
+        if (!in || limit_key != "step_size_limit" || key[0] != "step" ||
+            key[4] != "pvd_records" || tail_key[0] != "step_offset" ||
+            tail_key[2] != "problem_data")
           throw std::runtime_error("The checkpoint file <" + filename +
                                    "> is damaged.");
         return state;

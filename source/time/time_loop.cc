@@ -56,6 +56,7 @@ namespace PhaseField
     Settings s;
     s.model               = parameters.model;
     s.max_step_halvings   = parameters.newton.max_step_halvings;
+    s.regrow_step_size    = parameters.newton.regrow_step_size;
     s.adaptive            = parameters.mesh.adaptive;
     s.refinement_interval = parameters.mesh.refinement_interval;
     s.vtu_interval        = parameters.output.vtu_interval;
@@ -105,7 +106,8 @@ namespace PhaseField
                                      "tau",
                                      "residual_norm",
                                      "al_iterations",
-                                     "tr_iterations"},
+                                     "tr_iterations",
+                                     "step_halvings"},
                                     client.extra_columns());
   }
 
@@ -163,7 +165,7 @@ namespace PhaseField
                                        statistics_columns(),
                                        discretization.get_mpi_communicator(),
                                        previous_step);
-    record(previous_step, state, StepReport(), settings.model.tau, false);
+    record(previous_step, state, StepReport(), settings.model.tau, 0, false);
     run_steps(previous_step + 1, state);
   }
 
@@ -189,10 +191,11 @@ namespace PhaseField
     discretization.load(Checkpoint::mesh_filename(path), state);
     discretization.reinit(old_state, saved.n_fields);
     discretization.set_pvd_records(saved.pvd_records);
-    time        = saved.time;
-    state_tau   = saved.state_tau;
-    step_offset = saved.step_offset;
-    final_step  = saved.finished ? saved.step : step_offset + n_steps;
+    time            = saved.time;
+    state_tau       = saved.state_tau;
+    step_size_limit = saved.step_size_limit;
+    step_offset     = saved.step_offset;
+    final_step      = saved.finished ? saved.step : step_offset + n_steps;
     client.after_load(state, saved.problem_data);
     scheme.reset_solver();
     return saved.step;
@@ -207,17 +210,23 @@ namespace PhaseField
     const unsigned int checkpoints = settings.checkpoint_interval;
     for (unsigned int step = first_step; step <= final_step; ++step)
       {
-        old_state        = state;
-        double       tau = settings.model.step_size(step - step_offset);
+        old_state              = state;
+        const double tried_tau = first_step_size(step);
+        double       tau       = tried_tau;
         const double energy_before =
           scheme.has_energy_law() ? scheme.energy_law_energy(state) : 0.;
         const StepReport report = advance_with_halving(step, state, tau);
+        if (settings.regrow_step_size)
+          step_size_limit = tau < tried_tau ? tau : 2 * tau;
         if (scheme.has_energy_law() && client.energy_law_applies())
           check_energy_law(step, state, energy_before, tau);
         state_tau = tau;
         time += tau;
-        last_step               = step;
-        const Energies energies = record(step, state, report, tau);
+        last_step = step;
+        // tau = tried_tau / 2^halvings exactly
+        const auto halvings =
+          static_cast<unsigned int>(std::lround(std::log2(tried_tau / tau)));
+        const Energies energies = record(step, state, report, tau, halvings);
         // asked after every step, the last one too: the client may keep
         // a history that a checkpoint of this step holds
         const bool client_finished = client.finished(step, state, energies);
@@ -238,6 +247,17 @@ namespace PhaseField
 
 
   template <int dim>
+  double
+  TimeLoop<dim>::first_step_size(const unsigned int step) const
+  {
+    const double scheduled = settings.model.step_size(step - step_offset);
+    return step_size_limit > 0 ? std::min(scheduled, step_size_limit) :
+                                 scheduled;
+  }
+
+
+
+  template <int dim>
   void
   TimeLoop<dim>::write_checkpoint(const unsigned int step,
                                   BlockVector       &state,
@@ -245,14 +265,15 @@ namespace PhaseField
   {
     TimerOutput::Scope t(timer, "checkpoint: write");
     Checkpoint::State  saved;
-    saved.step         = step;
-    saved.time         = time;
-    saved.state_tau    = state_tau;
-    saved.n_fields     = state.n_blocks();
-    saved.pvd_records  = discretization.get_pvd_records();
-    saved.step_offset  = step_offset;
-    saved.finished     = finished && step != final_step;
-    saved.problem_data = client.checkpoint_data();
+    saved.step            = step;
+    saved.time            = time;
+    saved.state_tau       = state_tau;
+    saved.step_size_limit = step_size_limit;
+    saved.n_fields        = state.n_blocks();
+    saved.pvd_records     = discretization.get_pvd_records();
+    saved.step_offset     = step_offset;
+    saved.finished        = finished && step != final_step;
+    saved.problem_data    = client.checkpoint_data();
     Checkpoint::write(settings.output_directory, discretization, state, saved);
     pcout << "  checkpoint written after step " << step << std::endl;
     // continue from what was written, as a resumed run does: the same
@@ -349,6 +370,7 @@ namespace PhaseField
                         const BlockVector &state,
                         const StepReport  &report,
                         const double       tau,
+                        const unsigned int halvings,
                         const bool         with_output)
   {
     const Energies e     = scheme.energies(state);
@@ -382,7 +404,8 @@ namespace PhaseField
                                              tau,
                                              report.final_residual_norm,
                                              double(report.al_iterations),
-                                             double(report.tr_iterations)},
+                                             double(report.tr_iterations),
+                                             double(halvings)},
                                             extras));
     pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
           << std::setprecision(5) << time << "  newton "

@@ -276,6 +276,13 @@ namespace PhaseField
     /** How often a failed time step may be retried with half the step. */
     unsigned int max_step_halvings;
     /**
+     * `Regrow step size`: after a step that needed halvings, the next
+     * steps start from the reduced size and double after each step taken
+     * without halving, up to the scheduled size (false: every step starts
+     * from the scheduled size, the thesis's fixed grid).
+     */
+    bool regrow_step_size;
+    /**
      * Iterations of the descent method that takes a step from its start
      * where Newton's method failed (nested scheme without fixed U).
      */

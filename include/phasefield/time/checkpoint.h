@@ -37,6 +37,11 @@ namespace PhaseField
        * proportional to it), i.e. after any step halvings.
        */
       double state_tau = 0;
+      /**
+       * The largest size the next step may try (Newton / Regrow step
+       * size; 0: the scheduled size).
+       */
+      double step_size_limit = 0;
       /** Number of fields (blocks of the state). */
       unsigned int n_fields = 0;
       /** The records of solution.pvd so far (time, file). */

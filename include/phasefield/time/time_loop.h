@@ -156,11 +156,13 @@ namespace PhaseField
       /** Step sizes (ramp-up, Tau) and the number of steps. */
       ModelParameters model;
       unsigned int    max_step_halvings;
-      bool            adaptive;
-      unsigned int    refinement_interval;
-      unsigned int    vtu_interval;
-      bool            verbose;
-      std::string     output_directory;
+      /** NewtonParameters::regrow_step_size. */
+      bool         regrow_step_size;
+      bool         adaptive;
+      unsigned int refinement_interval;
+      unsigned int vtu_interval;
+      bool         verbose;
+      std::string  output_directory;
       /** Write a checkpoint every this many steps (0: never). */
       unsigned int checkpoint_interval;
 
@@ -284,18 +286,27 @@ namespace PhaseField
 
     /**
      * Statistics row, progress line and (if due and @p with_output) VTU
-     * output of step @p step; returns the energies of @p state.
+     * output of step @p step, taken at size @p tau after @p halvings
+     * halvings (column `step_halvings`); returns the energies of @p state.
      */
     Energies
     record(const unsigned int step,
            const BlockVector &state,
            const StepReport  &report,
            const double       tau,
+           const unsigned int halvings    = 0,
            const bool         with_output = true);
 
     /** VTU output of the fields and the curvature. */
     void
     output_results(const unsigned int step, const BlockVector &state);
+
+    /**
+     * The size step @p step tries first: the scheduled size, at most
+     * step_size_limit.
+     */
+    double
+    first_step_size(const unsigned int step) const;
 
     const Settings                    settings;
     Discretization<dim>              &discretization;
@@ -316,7 +327,12 @@ namespace PhaseField
     unsigned int last_step = 0;
     double       time      = 0;
     /** The step size the multipliers of the current state belong to. */
-    double      state_tau;
+    double state_tau;
+    /**
+     * The largest size the next step may try (Settings::regrow_step_size;
+     * 0: no limit, the scheduled size).
+     */
+    double      step_size_limit = 0;
     BlockVector old_state;
   };
 } // namespace PhaseField
