@@ -369,8 +369,7 @@ namespace PhaseField
     if (coeff.outer.has_restoration_terms())
       return solve_full_system(z, r, dz, solver, 0.);
     ReducedMatrices  local;
-    ReducedMatrices &matrices =
-      mesh_matrices != nullptr ? *mesh_matrices : local;
+    ReducedMatrices &matrices = reduced_matrix_storage(local);
     // if the matrices do not depend on the state: build (and factorise)
     // them once
     if (!constant_jacobian || matrices.k.m() == 0)
@@ -636,6 +635,15 @@ namespace PhaseField
 
 
   template <int dim>
+  typename NestedStep<dim>::ReducedMatrices &
+  NestedStep<dim>::reduced_matrix_storage(ReducedMatrices &local) const
+  {
+    return mesh_matrices != nullptr ? *mesh_matrices : local;
+  }
+
+
+
+  template <int dim>
   TrilinosWrappers::SparseMatrix &
   NestedStep<dim>::full_jacobian_storage(
     TrilinosWrappers::SparseMatrix &local) const
@@ -703,8 +711,7 @@ namespace PhaseField
                                      const double       shift) const
   {
     ReducedMatrices  local;
-    ReducedMatrices &matrices =
-      mesh_matrices != nullptr ? *mesh_matrices : local;
+    ReducedMatrices &matrices = reduced_matrix_storage(local);
     build_reduced_matrices(z, matrices, solver.type(), shift);
     if (!matrices.preconditioner_solver)
       matrices.preconditioner_solver =
@@ -756,8 +763,7 @@ namespace PhaseField
     // the shift enters the U-U block, (1 + a + shift) M, which the
     // elimination keeps exactly (build_reduced_matrices())
     ReducedMatrices  local;
-    ReducedMatrices &matrices =
-      mesh_matrices != nullptr ? *mesh_matrices : local;
+    ReducedMatrices &matrices = reduced_matrix_storage(local);
     build_reduced_matrices(z, matrices, solver.type(), shift);
     return solve_reduced_system(matrices, r, dz, solver);
   }

@@ -435,6 +435,13 @@ namespace PhaseField
                            dealii::TrilinosWrappers::SparseMatrix &j) const;
 
     /**
+     * The reduced matrices of the eliminated system: those kept in the
+     * per-mesh storage, or @p local where the step has none.
+     */
+    ReducedMatrices &
+    reduced_matrix_storage(ReducedMatrices &local) const;
+
+    /**
      * The 3-field Jacobian of assemble_full_jacobian(): the one kept in
      * the per-mesh storage (pattern built at its first use), or @p local.
      */
