@@ -11,19 +11,7 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string>                 header;
-  const auto                               rows = Testing::run_willmore(R"(
-set Dimension = 2
-subsection Geometry
-  set Shape = quarter circle
-  set Radius = 0.4
-end
-subsection Mesh
-  set Finest level = 6
-  set Coarsest level = 3
-end
-subsection Phase field
-  set Epsilon = 4*h
-end
+  const auto rows  = Testing::run_willmore(Testing::quarter_circle_level6 + R"(
 subsection Time stepping
   set Tau = 0.03*h
   set Inner tau = h^2
@@ -35,7 +23,7 @@ subsection Output
 end
 )",
                                           header);
-  const double                             tau  = 0.03 / 64;
+  const double tau = 0.03 / 64;
   const double factor[] = {1. / 8, 1. / 4, 1. / 2, 1., 1.};
   bool         sizes_ok = rows.size() == 6;
   double       time     = 0;

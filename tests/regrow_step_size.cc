@@ -22,20 +22,7 @@ namespace
   std::vector<std::vector<double>>
   run(const bool regrow, std::vector<std::string> &header)
   {
-    return Testing::run_willmore(
-      std::string(R"(
-set Dimension = 2
-subsection Geometry
-  set Shape = quarter circle
-  set Radius = 0.4
-end
-subsection Mesh
-  set Finest level = 6
-  set Coarsest level = 3
-end
-subsection Phase field
-  set Epsilon = 4*h
-end
+    return Testing::run_willmore(Testing::quarter_circle_level6 + R"(
 subsection Time stepping
   set Tau = 0.06*h
   set Inner tau = h^2
@@ -44,15 +31,15 @@ end
 subsection Newton
   set Maximum iterations = 3
   set Maximum descent iterations = 1
-  set Regrow step size = )") +
-        (regrow ? "true" : "false") + R"(
+  set Regrow step size = )" + (regrow ? "true" : "false") +
+                                   R"(
 end
 subsection Output
   set VTU interval = 0
 end
 )",
-      header,
-      regrow ? "regrow" : "scheduled");
+                                 header,
+                                 regrow ? "regrow" : "scheduled");
   }
 
   /** The size step @p i first tried: tau * 2^step_halvings. */

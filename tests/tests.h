@@ -167,6 +167,26 @@ namespace Testing
 namespace Testing
 {
   /**
+   * The quarter circle of radius 0.4 on a small adaptive mesh (levels 3-6,
+   * eps = 4h): the input of ramp_up_steps and regrow_step_size, which add
+   * their time stepping, Newton and output settings.
+   */
+  inline const std::string quarter_circle_level6 = R"(
+set Dimension = 2
+subsection Geometry
+  set Shape = quarter circle
+  set Radius = 0.4
+end
+subsection Mesh
+  set Finest level = 6
+  set Coarsest level = 3
+end
+subsection Phase field
+  set Epsilon = 4*h
+end
+)";
+
+  /**
    * The damaged circle of thesis Fig. 5.6 on a small adaptive mesh (level
    * 6, eta = 1, 64-pixel pictures): the input of edge_restoration_circle,
    * edge_restoration_augmented_lagrangian and checkpoint_restoration, which
