@@ -230,6 +230,12 @@ namespace PhaseField
                                                      const Vector &,
                                                      const double penalty)
   {
+    // without the double well (the biharmonic model, c = 0) S_V does not
+    // depend on the iterate: its factorisation serves all trust-region
+    // iterates of one penalty
+    if (weights.c == 0 && schur_solver != nullptr && setups > 0 &&
+        penalty == schur_penalty)
+      return;
     // S_V = w Khat M^-1 Khat + m M, Khat = K - b M (class documentation)
     const double s    = f_scale;
     const double a    = weights.a;
