@@ -180,6 +180,15 @@ namespace PhaseField
                                             target,
                                             !watchdog_used);
         const double       previous_norm = norm;
+        // at round-off no update reduces the residual any further: that
+        // is convergence as the stagnation in reached_target() is
+        if (step.damping > control.max_damping_steps &&
+            reached_target(norm, previous_norm, target, roundoff_level))
+          {
+            report.converged           = true;
+            report.final_residual_norm = norm;
+            return report;
+          }
         if (!accept_update(
               step, it, control, pcout, trial, z, norm, watchdog_used))
           return report;
