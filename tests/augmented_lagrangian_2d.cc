@@ -17,19 +17,7 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string>                 header;
-  const auto                               rows = Testing::run_willmore(R"(
-set Dimension = 2
-subsection Geometry
-  set Shape = quarter circle
-  set Radius = 0.4
-end
-subsection Mesh
-  set Finest level = 6
-  set Coarsest level = 3
-end
-subsection Phase field
-  set Epsilon = 4*h
-end
+  const auto rows = Testing::run_willmore(Testing::quarter_circle_level6 + R"(
 subsection Time stepping
   set Scheme = augmented lagrangian
   set Tau = h^2

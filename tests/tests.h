@@ -168,7 +168,8 @@ namespace Testing
 {
   /**
    * The quarter circle of radius 0.4 on a small adaptive mesh (levels 3-6,
-   * eps = 4h): the input of ramp_up_steps and regrow_step_size, which add
+   * eps = 4h): the input of ramp_up_steps, regrow_step_size and
+   * augmented_lagrangian_2d, which add
    * their time stepping, Newton and output settings.
    */
   inline const std::string quarter_circle_level6 = R"(
