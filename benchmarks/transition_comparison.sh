@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fixed against automatic level transitions of shape_from_contour
 # (doc/shape_from_contour.md, "Automatic against fixed level transitions"):
-# runs a contour parameter file twice on 2 MPI ranks, with its own
+# runs a contour parameter file twice on NP MPI ranks, with its own
 # `Multilevel / Transition` = fixed and with automatic (the same Steps per
 # level as maxima), one after the other, and prints per run the steps per
 # level, the labeling error at the end of each level, the final Willmore
@@ -11,7 +11,9 @@
 #          parameter_files/shape_from_contour/fig6_10_sphere.prm \
 #          output/transition_sphere \
 #          --set "Multilevel/Levels=5, 6" --set "Multilevel/Steps per level=99, 49"
-# Extra arguments are passed to both runs.
+# Extra arguments are passed to both runs. Environment: NP = MPI ranks
+# (default 2); AUTO_STEPS = the automatic run's maximal steps per level
+# (default: the same as the fixed run's), e.g. AUTO_STEPS="400, 100, 100".
 set -euo pipefail
 prm=$1; out=$2; shift 2
 build=${BUILD:-build}
@@ -19,8 +21,12 @@ mkdir -p "$out"
 printf '%-10s %-20s %6s %-36s %9s %9s %9s %8s\n' transition "steps per level" steps \
   "labeling error at each level end" W total inside wall_s
 for transition in fixed automatic; do
-  OMP_NUM_THREADS=1 mpirun --allow-run-as-root -np 2 "$build/shape_from_contour" "$prm" \
-    "$@" --set "Multilevel/Transition=$transition" \
+  maxima=()
+  if [ "$transition" = automatic ] && [ -n "${AUTO_STEPS:-}" ]; then
+    maxima=(--set "Multilevel/Steps per level=$AUTO_STEPS")
+  fi
+  OMP_NUM_THREADS=1 mpirun --allow-run-as-root -np "${NP:-2}" "$build/shape_from_contour" "$prm" \
+    "$@" "${maxima[@]}" --set "Multilevel/Transition=$transition" \
     --set "Output directory=$out/$transition" --set "Output/VTU interval=0" \
     > "$out/$transition.log" 2>&1 || { echo "$transition: FAILED, see $out/$transition.log"; continue; }
   /usr/bin/python3 - "$out/$transition/statistics.csv" "$transition" <<'PY'

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -242,6 +243,10 @@ namespace PhaseField
      */
     constexpr unsigned int direct_solver_max_iterations = 100;
     /**
+     * Progress lines printed per level (about one per tenth of its steps).
+     */
+    constexpr unsigned int n_progress_lines = 10;
+    /**
      * Newton's method on the linear system: one iteration solves a step
      * exactly (the residual drops to round-off, far below this); a second
      * one would only polish round-off.
@@ -403,8 +408,10 @@ namespace PhaseField
     discretization.get_operators().zero_constrained(solution.block(0));
     scheme->initialize(solution, step_sizes.tau);
 
-    double     time = 0;
-    StepReport report, total_report;
+    double             time = 0;
+    StepReport         report, total_report;
+    const unsigned int progress_interval =
+      std::max(1u, step_sizes.n_steps / n_progress_lines);
     for (unsigned int step = 1; step <= step_sizes.n_steps; ++step)
       {
         TimerOutput::Scope t(computing_timer, "time steps");
@@ -422,6 +429,11 @@ namespace PhaseField
         total_report.al_iterations += report.al_iterations;
         total_report.tr_iterations += report.tr_iterations;
         total_report.linear_iterations += report.linear_iterations;
+        if (step % progress_interval == 0 || step == step_sizes.n_steps)
+          pcout << "  level " << level << ": step " << step << " of "
+                << step_sizes.n_steps << ", t = " << time << ", "
+                << std::round(10 * wall_timer.wall_time()) / 10 << " s"
+                << std::endl;
       }
 
     BiharmonicLevelResult result;
