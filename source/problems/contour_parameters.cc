@@ -127,22 +127,32 @@ namespace PhaseField
                       Patterns::Selection("fixed|automatic"),
                       "fixed: Steps per level steps on each level. "
                       "automatic: move on to the next level as soon as the "
-                      "total energy (thesis (6.3)) has decreased by less "
+                      "Transition criterion has decreased by less "
                       "than Transition tolerance times its value over the "
                       "last Transition window steps (at most Steps per "
                       "level steps).");
+    prm.declare_entry("Transition criterion",
+                      "total energy",
+                      Patterns::Selection("total energy|labeling error"),
+                      "Automatic transition: the quantity that must have "
+                      "stopped decreasing. total energy: thesis (6.3), the "
+                      "functional the steps lower (the level's shape has "
+                      "converged). labeling error: Int |alpha* - "
+                      "alpha[U]| dx' (the labeling has stopped improving; "
+                      "on a coarse level it can rise again while the total "
+                      "energy still falls).");
     prm.declare_entry("Transition window",
                       "10",
                       Patterns::Integer(1),
                       "Automatic transition: the number of steps over which "
-                      "the relative decrease of the total energy is "
+                      "the relative decrease of the Transition criterion is "
                       "measured.");
     prm.declare_entry("Transition tolerance",
                       "0.01",
                       Patterns::Double(0.),
-                      "Automatic transition: move on when the total energy "
-                      "decreased by less than this fraction of its value "
-                      "over the window.");
+                      "Automatic transition: move on when the Transition "
+                      "criterion decreased by less than this fraction of "
+                      "its value over the window.");
     prm.declare_entry("Sharpen interface",
                       "false",
                       Patterns::Bool(),
@@ -177,6 +187,9 @@ namespace PhaseField
     transition      = prm.get("Transition") == "automatic" ?
                         LevelTransition::automatic :
                         LevelTransition::fixed;
+    criterion       = prm.get("Transition criterion") == "labeling error" ?
+                        TransitionCriterion::labeling_error :
+                        TransitionCriterion::total_energy;
     window          = prm.get_integer("Transition window");
     tolerance       = prm.get_double("Transition tolerance");
     sharpen         = prm.get_bool("Sharpen interface");

@@ -148,7 +148,7 @@ namespace PhaseField
   {
     std::vector<double> data{double(level_index),
                              double(level_prm.mesh.finest_level)};
-    data.insert(data.end(), energy_history.begin(), energy_history.end());
+    data.insert(data.end(), criterion_history.begin(), criterion_history.end());
     return data;
   }
 
@@ -160,8 +160,8 @@ namespace PhaseField
                                   const std::vector<double> &problem_data)
   {
     (void)state;
-    energy_history.assign(problem_data.begin() + n_level_entries,
-                          problem_data.end());
+    criterion_history.assign(problem_data.begin() + n_level_entries,
+                             problem_data.end());
   }
 
 
@@ -176,7 +176,7 @@ namespace PhaseField
     grid        = std::make_unique<HuffmanLabeling::LabelingGrid<dim>>(
       level_prm.mesh.finest_level);
     target = target_on(*grid);
-    energy_history.clear();
+    criterion_history.clear();
     this->pcout << "level " << level_prm.mesh.finest_level
                 << ": h = " << level_prm.mesh.h()
                 << ", epsilon = " << level_prm.model.epsilon
@@ -363,17 +363,21 @@ namespace PhaseField
     (void)step;
     if (parameters.multilevel.transition != LevelTransition::automatic)
       return false;
-    energy_history.push_back(total_energy(energies, mismatch(state).energy));
+    const Mismatch m = mismatch(state);
+    const bool     labeling =
+      parameters.multilevel.criterion == TransitionCriterion::labeling_error;
+    criterion_history.push_back(labeling ? m.labeling_error :
+                                           total_energy(energies, m.energy));
     const unsigned int window = parameters.multilevel.window;
-    if (energy_history.size() <= window)
+    if (criterion_history.size() <= window)
       return false;
-    const double now = energy_history.back();
+    const double now = criterion_history.back();
     const double decrease =
-      energy_history[energy_history.size() - 1 - window] - now;
+      criterion_history[criterion_history.size() - 1 - window] - now;
     if (decrease >= parameters.multilevel.tolerance * std::abs(now))
       return false;
-    this->pcout << "  total energy decreased by " << decrease << " over "
-                << window
+    this->pcout << (labeling ? "  labeling error" : "  total energy")
+                << " decreased by " << decrease << " over " << window
                 << " steps: moving on (Multilevel / Transition = automatic)"
                 << std::endl;
     return true;

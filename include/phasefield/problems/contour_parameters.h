@@ -63,10 +63,19 @@ namespace PhaseField
     /** After `Steps per level` steps. */
     fixed,
     /**
-     * When the total energy has stopped decreasing (see
+     * When the transition criterion has stopped decreasing (see
      * MultilevelParameters::window), at most `Steps per level` steps.
      */
     automatic
+  };
+
+  /** What the automatic transition watches (`Transition criterion`). */
+  enum class TransitionCriterion
+  {
+    /** The total energy (thesis (6.3)), the functional the steps lower. */
+    total_energy,
+    /** The labeling error Int |alpha* - alpha[U]| dx'. */
+    labeling_error
   };
 
   /** Subsection `Multilevel`: coarse to fine levels (thesis 6.4). */
@@ -78,11 +87,12 @@ namespace PhaseField
     std::vector<unsigned int> steps_per_level;
     LevelTransition           transition;
     /**
-     * Automatic transition: move on once the total energy E has decreased
-     * by less than `tolerance` * |E| over the last `window` steps.
+     * Automatic transition: move on once the criterion's value E has
+     * decreased by less than `tolerance` * |E| over the last `window` steps.
      */
-    unsigned int window;
-    double       tolerance;
+    TransitionCriterion criterion;
+    unsigned int        window;
+    double              tolerance;
     /**
      * Map U to the finer epsilon's profile at each level transition
      * (ContourProblem::move_to_level()).

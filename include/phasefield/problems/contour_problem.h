@@ -195,8 +195,11 @@ namespace PhaseField
     std::vector<double>                                 target;
     /** Target = image: the image. */
     Images::GrayImage target_image;
-    /** Total energy after every step of the current level. */
-    std::vector<double> energy_history;
+    /**
+     * The automatic transition's criterion (total energy or labeling
+     * error) after every step of the current level.
+     */
+    std::vector<double> criterion_history;
   };
 } // namespace PhaseField
 
