@@ -206,17 +206,19 @@ namespace PhaseField
 
   template <int dim>
   bool
-  Discretization<dim>::adapt_to_phase_field(BlockVector &fields)
+  Discretization<dim>::adapt_to_phase_field(BlockVector &fields,
+                                            const double band_scale)
   {
-    const MeshParameters     &mesh    = settings.mesh;
-    const std::vector<Vector> ghosted = ghosted_copies(fields);
+    const MeshParameters     &mesh       = settings.mesh;
+    const std::vector<Vector> ghosted    = ghosted_copies(fields);
+    const double              band_width = band_scale * mesh.band_width;
     NarrowBand::flag_cells_from_phase_field(dof_handler,
                                             ghosted[0],
-                                            mesh.band_width,
+                                            band_width,
                                             mesh.finest_level,
                                             mesh.coarsest_level,
                                             settings.coarsening_band_factor *
-                                              mesh.band_width);
+                                              band_width);
     // smoothing removes flags that cannot be executed (2:1 balance,
     // incomplete sibling groups); keep the mesh if none is left
     triangulation.prepare_coarsening_and_refinement();
@@ -253,7 +255,8 @@ namespace PhaseField
   template <int dim>
   void
   Discretization<dim>::refine_to_level(const unsigned int level,
-                                       BlockVector       &fields)
+                                       BlockVector       &fields,
+                                       const double       band_scale)
   {
     AssertThrow(level >= settings.mesh.finest_level,
                 ExcMessage("refine_to_level() cannot coarsen the band."));
@@ -262,7 +265,7 @@ namespace PhaseField
     // every adaptation refines the band (or the uniform mesh) by one level
     for (unsigned int i = 0; i < n_new; ++i)
       if (settings.mesh.adaptive)
-        adapt_to_phase_field(fields);
+        adapt_to_phase_field(fields, band_scale);
       else
         {
           const std::vector<Vector> ghosted = ghosted_copies(fields);

@@ -214,11 +214,17 @@ namespace PhaseField
     const WillmoreParameters next = parameters.for_level(index);
     {
       TimerOutput::Scope t(this->computing_timer, "mesh: level transition");
+      // U will be sharpened to the finer epsilon: |U_sharp| < tanh(b) iff
+      // |U| < tanh(b eps_new / eps_old), so the band of the finer profile
+      // is refined, not the wider one of the coarse epsilon
+      const double ratio = level_prm.model.epsilon / next.model.epsilon;
       this->discretization.refine_to_level(next.mesh.finest_level,
-                                           this->solution);
+                                           this->solution,
+                                           parameters.multilevel.sharpen ?
+                                             1 / ratio :
+                                             1);
       if (parameters.multilevel.sharpen)
-        sharpen_profile(this->solution.block(0),
-                        level_prm.model.epsilon / next.model.epsilon);
+        sharpen_profile(this->solution.block(0), ratio);
       this->discretization.distribute_constraints(this->solution);
     }
     TimerOutput::Scope t(this->computing_timer, "initialisation");

@@ -59,8 +59,8 @@ namespace PhaseField
        * the refinement band). Coarsening where 1 - |U| is not negligible
        * changes the discrete energy at every re-meshing.
        */
-      double coarsening_band_factor = 1;
-      BoundaryConditions boundary_conditions      = BoundaryConditions::natural;
+      double             coarsening_band_factor = 1;
+      BoundaryConditions boundary_conditions    = BoundaryConditions::natural;
     };
 
     Discretization(const Settings &settings, const MPI_Comm mpi_communicator);
@@ -81,20 +81,26 @@ namespace PhaseField
      * and transfer all blocks to the new mesh (interpolation; the
      * constraints are not yet distributed). Returns false, leaving mesh
      * and fields alone, if no cell is to be refined or coarsened.
-     * Collective.
+     * @p band_scale multiplies `Mesh / Band width` (and the coarsening
+     * band) for this adaptation. Collective.
      */
     bool
-    adapt_to_phase_field(BlockVector &fields);
+    adapt_to_phase_field(BlockVector &fields, const double band_scale = 1);
 
     /**
      * Make @p level (not below the current one) the finest level of the
      * narrow band and refine the band of the phase field in block 0 of
      * @p fields to it, transferring all blocks (constraints not yet
      * distributed): the transition to a finer level of a multilevel
-     * schedule. Collective.
+     * schedule. @p band_scale multiplies the band width as in
+     * adapt_to_phase_field(): a phase field that will be sharpened to a
+     * profile of epsilon * band_scale after the transfer needs a band
+     * only band_scale times as wide. Collective.
      */
     void
-    refine_to_level(const unsigned int level, BlockVector &fields);
+    refine_to_level(const unsigned int level,
+                    BlockVector       &fields,
+                    const double       band_scale = 1);
 
     /**
      * Write the mesh and all blocks of @p fields to the files
