@@ -160,7 +160,8 @@ namespace PhaseField
                       "the profile of the finer epsilon, U <- tanh((eps_old "
                       "/ eps_new) artanh(U)) at every node (U = tanh(d/eps) "
                       "has the width of the coarse level otherwise), before "
-                      "V and P are solved again.");
+                      "V and P are solved again; the transition then refines "
+                      "only the band of the finer profile.");
     prm.leave_subsection();
   }
 
