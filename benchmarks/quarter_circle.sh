@@ -6,7 +6,10 @@
 # Usage: [MESHES="adaptive uniform"] benchmarks/quarter_circle.sh [build dir] [levels...]
 #   e.g. benchmarks/quarter_circle.sh build 7 8 9
 # MESHES (default "adaptive uniform") selects the meshes; uniform is never
-# run at level 9 and above.
+# run at level 9 and above. MARGIN, INTERVAL and VTU, if set, override
+# Mesh / Band margin, Mesh / Refinement interval and Output / VTU interval
+# of the files (VTU output then goes to a temporary directory), e.g.
+#   MARGIN=0 INTERVAL=1 VTU=5 MESHES=adaptive benchmarks/quarter_circle.sh build 9
 set -euo pipefail
 build=${1:-build}; shift || true
 levels=${*:-7 8}
@@ -22,7 +25,11 @@ for level in $levels; do
         -e "s|set Adaptive            = true|set Adaptive            = $adaptive|" \
         -e "s|set VTU interval = 20|set VTU interval = 0|" \
         "$here/parameter_files/willmore_flow/quarter_circle_h$level.prm" > "$prm"
-    OMP_NUM_THREADS=1 mpirun --allow-run-as-root -np 2 "$build/willmore_flow" "$prm" > "$work/log_${level}_${adaptive}" 2>&1
+    overrides=()
+    [ -n "${MARGIN:-}" ] && overrides+=(--set "Mesh/Band margin=$MARGIN")
+    [ -n "${INTERVAL:-}" ] && overrides+=(--set "Mesh/Refinement interval=$INTERVAL")
+    [ -n "${VTU:-}" ] && overrides+=(--set "Output/VTU interval=$VTU")
+    OMP_NUM_THREADS=1 mpirun --allow-run-as-root -np 2 "$build/willmore_flow" "$prm" "${overrides[@]}" > "$work/log_${level}_${adaptive}" 2>&1
     /usr/bin/python3 - "$work/out_${level}_${adaptive}/statistics.csv" "$level" "$adaptive" <<'PY'
 import csv, math, sys
 rows = list(csv.DictReader(open(sys.argv[1])))

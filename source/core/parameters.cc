@@ -221,9 +221,20 @@ namespace PhaseField
       "Refinement interval",
       "1",
       Patterns::Integer(1),
-      "Adapt the mesh to the moving interface every this "
-      "many time steps (the band is wide enough for the interface to "
-      "move a few epsilon in between).");
+      "Check the narrow band every this many time steps (the band is "
+      "wide enough for the interface to move a few epsilon in between); "
+      "whether the mesh is then adapted, see Band margin.");
+    prm.declare_entry(
+      "Band margin",
+      "1",
+      Patterns::Double(0),
+      "Re-mesh (at a check, see Refinement interval) only when a cell "
+      "closer than (Band width - Band margin) * epsilon to the interface "
+      "is not on the finest level; the new mesh has the full Band width "
+      "again. The interface can so move Band margin * epsilon before the "
+      "mesh (and a direct solver's factorisation) changes. 0: re-mesh "
+      "whenever any cell would be refined or coarsened. Must be smaller "
+      "than Band width.");
     prm.declare_entry(
       "Stiffness quadrature",
       "Gauss",
@@ -248,10 +259,15 @@ namespace PhaseField
     adaptive             = prm.get_bool("Adaptive");
     band_width           = prm.get_double("Band width");
     refinement_interval  = prm.get_integer("Refinement interval");
+    band_margin          = prm.get_double("Band margin");
     stiffness_quadrature = prm.get("Stiffness quadrature") == "Gauss-Lobatto" ?
                              StiffnessQuadrature::gauss_lobatto :
                              StiffnessQuadrature::gauss;
     prm.leave_subsection();
+    if (band_margin >= band_width)
+      throw InputError("<Mesh / Band margin> (" + std::to_string(band_margin) +
+                       ") must be smaller than <Mesh / Band width> (" +
+                       std::to_string(band_width) + ").");
     if (finest_level < coarsest_level)
       throw InputError("<Mesh / Finest level> (" +
                        std::to_string(finest_level) +

@@ -207,11 +207,49 @@ namespace PhaseField
   template <int dim>
   bool
   Discretization<dim>::adapt_to_phase_field(BlockVector &fields,
-                                            const double band_scale)
+                                            const double band_scale,
+                                            const bool   use_margin)
   {
-    const MeshParameters     &mesh       = settings.mesh;
-    const std::vector<Vector> ghosted    = ghosted_copies(fields);
-    const double              band_width = band_scale * mesh.band_width;
+    const MeshParameters &mesh       = settings.mesh;
+    const double          band_width = band_scale * mesh.band_width;
+    if (!use_margin || mesh.band_margin <= 0)
+      return adapt_band_once(fields, band_width);
+    // finest cells are kept out to the coarsening band plus the margin
+    const double margin      = band_scale * mesh.band_margin;
+    const double outer_width = settings.coarsening_band_factor * band_width;
+    const auto   fits        = [&](const double inner) {
+      return NarrowBand::band_fits(dof_handler,
+                                   ghosted_copies(fields)[0],
+                                   inner,
+                                   outer_width + margin,
+                                   mesh.finest_level);
+    };
+    if (fits(band_width - margin))
+      return false;
+    // one adaptation refines or coarsens a cell by one level: where the
+    // interface moved into cells several levels coarser, repeat until the
+    // whole band is on the finest level again
+    bool changed = false;
+    for (unsigned int level = mesh.coarsest_level;
+         level < mesh.finest_level && !fits(band_width);
+         ++level)
+      {
+        if (!adapt_band_once(fields, band_width))
+          break;
+        changed = true;
+      }
+    return changed;
+  }
+
+
+
+  template <int dim>
+  bool
+  Discretization<dim>::adapt_band_once(BlockVector &fields,
+                                       const double band_width)
+  {
+    const MeshParameters     &mesh    = settings.mesh;
+    const std::vector<Vector> ghosted = ghosted_copies(fields);
     NarrowBand::flag_cells_from_phase_field(dof_handler,
                                             ghosted[0],
                                             band_width,

@@ -39,6 +39,57 @@ namespace PhaseField
 
 
 
+    namespace
+    {
+      /**
+       * Whether the vertex values @p values of a cell put it into the band
+       * |u| < @p threshold, or u changes sign on it.
+       */
+      bool
+      in_band(const Vector<double> &values, const double threshold)
+      {
+        bool near = false, positive = false, negative = false;
+        for (const double value : values)
+          {
+            near     = near || (std::abs(value) < threshold);
+            positive = positive || (value > 0);
+            negative = negative || (value < 0);
+          }
+        return near || (positive && negative);
+      }
+
+
+
+      /**
+       * Whether @p cell is the first child of a group of active siblings
+       * that all lie outside the band |u| < @p threshold: the group that
+       * flag_cells_from_phase_field() would coarsen. Groups with a sibling
+       * that is not active, or artificial here, are not counted.
+       */
+      template <int dim>
+      bool
+      first_of_group_outside_band(
+        const typename DoFHandler<dim>::active_cell_iterator &cell,
+        const TrilinosWrappers::MPI::Vector                  &u,
+        const double                                          threshold,
+        Vector<double>                                       &values)
+      {
+        if (cell->level() == 0 || cell->parent()->child(0) != cell)
+          return false;
+        for (const auto &sibling : cell->parent()->child_iterators())
+          {
+            if (!sibling->is_active() || sibling->is_artificial())
+              return false;
+            sibling->get_dof_values(u, values);
+            if (in_band(values, threshold))
+              return false;
+          }
+        return true;
+      }
+    } // namespace
+
+
+
     template <int dim>
     bool
     flag_cells_from_phase_field(const DoFHandler<dim> &dof_handler,
@@ -57,21 +108,12 @@ namespace PhaseField
         if (cell->is_locally_owned())
           {
             cell->get_dof_values(u, values);
-            bool in_band = false, in_wide_band = false, positive = false,
-                 negative = false;
-            for (const double value : values)
-              {
-                in_band = in_band || (std::abs(value) < threshold);
-                in_wide_band =
-                  in_wide_band || (std::abs(value) < coarsening_threshold);
-                positive = positive || (value > 0);
-                negative = negative || (value < 0);
-              }
-            in_band      = in_band || (positive && negative);
-            in_wide_band = in_wide_band || in_band;
+            const bool in_narrow_band = in_band(values, threshold);
+            const bool in_wide_band =
+              in_narrow_band || in_band(values, coarsening_threshold);
             cell->clear_refine_flag();
             cell->clear_coarsen_flag();
-            if (in_band && cell->level() < int(finest_level))
+            if (in_narrow_band && cell->level() < int(finest_level))
               {
                 cell->set_refine_flag();
                 ++n_flagged;
@@ -84,6 +126,37 @@ namespace PhaseField
           }
       return Utilities::MPI::sum(
                n_flagged, dof_handler.get_triangulation().get_communicator()) >
+             0;
+    }
+
+
+
+    template <int dim>
+    bool
+    band_fits(const DoFHandler<dim>               &dof_handler,
+              const TrilinosWrappers::MPI::Vector &u,
+              const double                         inner_width,
+              const double                         outer_width,
+              const unsigned int                   finest_level)
+    {
+      const double   inner_threshold = std::tanh(std::max(inner_width, 0.));
+      const double   outer_threshold = std::tanh(outer_width);
+      Vector<double> values(dof_handler.get_fe().n_dofs_per_cell());
+      unsigned int   n_misfits = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const bool finest = cell->level() == int(finest_level);
+            if (!finest)
+              cell->get_dof_values(u, values);
+            if ((!finest && in_band(values, inner_threshold)) ||
+                (finest && std::isfinite(outer_width) &&
+                 first_of_group_outside_band<dim>(
+                   cell, u, outer_threshold, values)))
+              ++n_misfits;
+          }
+      return Utilities::MPI::sum(
+               n_misfits, dof_handler.get_triangulation().get_communicator()) ==
              0;
     }
 
@@ -115,5 +188,17 @@ namespace PhaseField
                                    const unsigned int,
                                    const unsigned int,
                                    const double);
+    template bool
+    band_fits<2>(const DoFHandler<2> &,
+                 const TrilinosWrappers::MPI::Vector &,
+                 const double,
+                 const double,
+                 const unsigned int);
+    template bool
+    band_fits<3>(const DoFHandler<3> &,
+                 const TrilinosWrappers::MPI::Vector &,
+                 const double,
+                 const double,
+                 const unsigned int);
   } // namespace NarrowBand
 } // namespace PhaseField

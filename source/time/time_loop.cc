@@ -346,7 +346,7 @@ namespace PhaseField
     TimerOutput::Scope t(timer, "mesh: adapt");
     const bool   report_energy = settings.verbose && scheme.has_energy_law();
     const double before = report_energy ? scheme.energy_law_energy(state) : 0.;
-    if (!discretization.adapt_to_phase_field(state))
+    if (!discretization.adapt_to_phase_field(state, 1., true))
       return;
     discretization.reinit(old_state, state.n_blocks());
     client.after_remesh(state);

@@ -128,8 +128,13 @@ namespace PhaseField
     bool         adaptive;
     /** Half width of the finest band, in units of epsilon. */
     double band_width;
-    /** Re-mesh every this many time steps. */
+    /** Check the band every this many time steps. */
     unsigned int refinement_interval;
+    /**
+     * Re-mesh only when the band of (band_width - band_margin) epsilon is
+     * not on the finest level; 0: whenever a cell would change.
+     */
+    double band_margin = 0;
     /** Quadrature of the stiffness matrix L (see StiffnessQuadrature). */
     StiffnessQuadrature stiffness_quadrature;
 

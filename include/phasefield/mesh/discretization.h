@@ -80,12 +80,19 @@ namespace PhaseField
      * Adapt the narrow band to the phase field in block 0 of @p fields
      * and transfer all blocks to the new mesh (interpolation; the
      * constraints are not yet distributed). Returns false, leaving mesh
-     * and fields alone, if no cell is to be refined or coarsened.
-     * @p band_scale multiplies `Mesh / Band width` (and the coarsening
-     * band) for this adaptation. Collective.
+     * and fields alone, if no cell is to be refined or coarsened. With
+     * @p use_margin, also if the mesh fits the band within `Mesh / Band
+     * margin`: the band narrowed by it is on the finest level, and no
+     * group of finest sibling cells lies outside the coarsening band
+     * widened by it;
+     * otherwise adapts until the whole band is on the finest level.
+     * @p band_scale multiplies `Mesh / Band width`, the coarsening band and
+     * the margin for this adaptation. Collective.
      */
     bool
-    adapt_to_phase_field(BlockVector &fields, const double band_scale = 1);
+    adapt_to_phase_field(BlockVector &fields,
+                         const double band_scale = 1,
+                         const bool   use_margin = false);
 
     /**
      * Make @p level (not below the current one) the finest level of the
@@ -219,6 +226,14 @@ namespace PhaseField
      */
     void
     create_coarse_mesh();
+
+    /**
+     * One adaptation of the band of @p band_width (in units of epsilon) to
+     * the phase field in block 0 of @p fields, as adapt_to_phase_field()
+     * without the margin: false if no flag is left after smoothing.
+     */
+    bool
+    adapt_band_once(BlockVector &fields, const double band_width);
 
     /** @p fields with the ghost entries the transfer reads. */
     std::vector<Vector>

@@ -48,6 +48,23 @@ namespace PhaseField
                                 const unsigned int finest_level,
                                 const unsigned int coarsest_level,
                                 const double       coarsening_band_width = 0);
+
+    /**
+     * Whether the mesh fits the band of the phase field @p u (ghosted)
+     * within a margin, on all ranks (a collective operation): every cell
+     * of the band of @p inner_width (as in flag_cells_from_phase_field():
+     * a vertex with |u| < tanh(inner_width) or a sign change) is on
+     * @p finest_level, and no group of sibling cells on @p finest_level
+     * lies wholly outside the band of @p outer_width (such a group would
+     * be coarsened; not checked if @p outer_width is infinite).
+     */
+    template <int dim>
+    bool
+    band_fits(const dealii::DoFHandler<dim>               &dof_handler,
+              const dealii::TrilinosWrappers::MPI::Vector &u,
+              const double                                 inner_width,
+              const double                                 outer_width,
+              const unsigned int                           finest_level);
   } // namespace NarrowBand
 } // namespace PhaseField
 
