@@ -230,11 +230,12 @@ namespace PhaseField
       Patterns::Double(0),
       "Re-mesh (at a check, see Refinement interval) only when a cell "
       "closer than (Band width - Band margin) * epsilon to the interface "
-      "is not on the finest level; the new mesh has the full Band width "
-      "again. The interface can so move Band margin * epsilon before the "
-      "mesh (and a direct solver's factorisation) changes. 0: re-mesh "
-      "whenever any cell would be refined or coarsened. Must be smaller "
-      "than Band width.");
+      "is not on the finest level, or a group of finest sibling cells lies "
+      "farther than (Band width + Band margin) * epsilon from it; the new "
+      "mesh has the full Band width again. The interface can so move Band "
+      "margin * epsilon before the mesh (and a direct solver's "
+      "factorisation) changes. 0: re-mesh whenever any cell would be "
+      "refined or coarsened. Must be smaller than Band width.");
     prm.declare_entry(
       "Stiffness quadrature",
       "Gauss",

@@ -132,7 +132,9 @@ namespace PhaseField
     unsigned int refinement_interval;
     /**
      * Re-mesh only when the band of (band_width - band_margin) epsilon is
-     * not on the finest level; 0: whenever a cell would change.
+     * not on the finest level, or finest cells lie outside the
+     * (coarsening) band widened by band_margin; 0: whenever a cell would
+     * change (Discretization::adapt_to_phase_field()).
      */
     double band_margin = 0;
     /** Quadrature of the stiffness matrix L (see StiffnessQuadrature). */
