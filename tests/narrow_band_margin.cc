@@ -73,13 +73,8 @@ namespace
     bool
     resolved(const double width) const
     {
-      const auto                   &ops = discretization.get_operators();
-      TrilinosWrappers::MPI::Vector ghosted(ops.locally_owned_dofs,
-                                            ops.locally_relevant_dofs,
-                                            MPI_COMM_WORLD);
-      ghosted = fields.block(0);
       return NarrowBand::band_fits(discretization.get_dof_handler(),
-                                   ghosted,
+                                   discretization.ghosted_copy(fields.block(0)),
                                    width,
                                    std::numeric_limits<double>::infinity(),
                                    settings().mesh.finest_level);

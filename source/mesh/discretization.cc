@@ -152,14 +152,22 @@ namespace PhaseField
   std::vector<typename Discretization<dim>::Vector>
   Discretization<dim>::ghosted_copies(const BlockVector &fields) const
   {
-    std::vector<Vector> ghosted(fields.n_blocks());
+    std::vector<Vector> ghosted;
     for (unsigned int b = 0; b < fields.n_blocks(); ++b)
-      {
-        ghosted[b].reinit(operators.locally_owned_dofs,
-                          operators.locally_relevant_dofs,
-                          mpi_communicator);
-        ghosted[b] = fields.block(b);
-      }
+      ghosted.push_back(ghosted_copy(fields.block(b)));
+    return ghosted;
+  }
+
+
+
+  template <int dim>
+  typename Discretization<dim>::Vector
+  Discretization<dim>::ghosted_copy(const Vector &v) const
+  {
+    Vector ghosted(operators.locally_owned_dofs,
+                   operators.locally_relevant_dofs,
+                   mpi_communicator);
+    ghosted = v;
     return ghosted;
   }
 
@@ -219,7 +227,7 @@ namespace PhaseField
     const double outer_width = settings.coarsening_band_factor * band_width;
     const auto   fits        = [&](const double inner) {
       return NarrowBand::band_fits(dof_handler,
-                                   ghosted_copies(fields)[0],
+                                   ghosted_copy(fields.block(0)),
                                    inner,
                                    outer_width + margin,
                                    mesh.finest_level);

@@ -219,6 +219,10 @@ namespace PhaseField
       return dof_handler.n_dofs();
     }
 
+    /** A copy of @p v with the ghost entries of the locally relevant DoFs. */
+    Vector
+    ghosted_copy(const Vector &v) const;
+
   private:
     /**
      * The coarse mesh: one cell [0,1]^dim, boundary ids 2d (x_d = 0) and
