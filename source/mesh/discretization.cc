@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fstream>
+#include <iomanip>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/mesh/narrow_band.h>
 
@@ -169,6 +170,41 @@ namespace PhaseField
                    mpi_communicator);
     ghosted = v;
     return ghosted;
+  }
+
+
+
+  template <int dim>
+  typename Discretization<dim>::PartitionBalance
+  Discretization<dim>::partition_balance() const
+  {
+    const auto cells = Utilities::MPI::min_max_avg(
+      double(triangulation.n_locally_owned_active_cells()), mpi_communicator);
+    const auto dofs =
+      Utilities::MPI::min_max_avg(double(dof_handler.n_locally_owned_dofs()),
+                                  mpi_communicator);
+    return {Utilities::MPI::n_mpi_processes(mpi_communicator),
+            types::global_cell_index(cells.min),
+            types::global_cell_index(cells.max),
+            types::global_dof_index(dofs.min),
+            types::global_dof_index(dofs.max)};
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::print_partition_balance(
+    const ConditionalOStream &pcout) const
+  {
+    const PartitionBalance balance = partition_balance();
+    const double mean_dofs = double(dof_handler.n_dofs()) / balance.n_ranks;
+    pcout << "Partition of the final mesh over " << balance.n_ranks
+          << " rank(s): " << balance.min_cells << "-" << balance.max_cells
+          << " cells and " << balance.min_dofs << "-" << balance.max_dofs
+          << " DoFs per field per rank (largest share " << std::fixed
+          << std::setprecision(3) << balance.max_dofs / mean_dofs
+          << " x the mean)" << std::defaultfloat << std::endl;
   }
 
 

@@ -110,6 +110,7 @@ namespace PhaseField
       }
     this->computing_timer.print_summary();
     print_peak_memory(this->pcout, this->mpi_communicator);
+    this->discretization.print_partition_balance(this->pcout);
   }
 
 

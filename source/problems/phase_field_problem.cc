@@ -92,6 +92,7 @@ namespace PhaseField
       }
     computing_timer.print_summary();
     print_peak_memory(pcout, mpi_communicator);
+    discretization.print_partition_balance(pcout);
   }
 
 

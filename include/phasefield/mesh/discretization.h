@@ -1,6 +1,7 @@
 #ifndef phasefield_mesh_discretization_h
 #define phasefield_mesh_discretization_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -222,6 +223,30 @@ namespace PhaseField
     /** A copy of @p v with the ghost entries of the locally relevant DoFs. */
     Vector
     ghosted_copy(const Vector &v) const;
+
+    /**
+     * How evenly the current mesh is spread over the ranks: the fewest
+     * and most locally owned active cells and DoFs (of one field) of any
+     * rank. p4est gives every rank the same number of cells up to one; the
+     * DoFs on the partition boundaries belong to the lower rank.
+     */
+    struct PartitionBalance
+    {
+      unsigned int                     n_ranks;
+      dealii::types::global_cell_index min_cells, max_cells;
+      dealii::types::global_dof_index  min_dofs, max_dofs;
+    };
+
+    /** The spread of the current mesh over the ranks. Collective. */
+    PartitionBalance
+    partition_balance() const;
+
+    /**
+     * Print partition_balance() in one line on @p pcout, with the largest
+     * share of a rank relative to the mean. Collective.
+     */
+    void
+    print_partition_balance(const dealii::ConditionalOStream &pcout) const;
 
   private:
     /**
