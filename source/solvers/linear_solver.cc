@@ -143,9 +143,14 @@ namespace PhaseField
     if (factorization && factorization->size() == matrix.m())
       factorization->refactorize(matrix);
     else
-      factorization =
-        std::make_unique<DirectFactorization>(matrix,
-                                              pivoting_workspace_percent);
+      {
+        // free the old factors before the new ones are computed: both at
+        // once would raise the peak memory
+        factorization.reset();
+        factorization =
+          std::make_unique<DirectFactorization>(matrix,
+                                                pivoting_workspace_percent);
+      }
     ++factorization_count;
   }
 
@@ -183,6 +188,8 @@ namespace PhaseField
     if (!constant_matrix || !schur_preconditioner ||
         schur_preconditioner->size() != g.m())
       {
+        // free the old multigrid hierarchy before the new one is built
+        schur_preconditioner.reset();
         schur_preconditioner =
           std::make_unique<SchurPreconditioner>(g, mass, interface_mode);
         ++factorization_count;
