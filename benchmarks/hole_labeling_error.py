@@ -20,7 +20,12 @@ import re
 import sys
 
 
+# the hole's 1-level line is looked for within this multiple of the radius
+SEARCH_FACTOR = 1.5
+
+
 def level_errors(filename, center, radius):
+    hole_below_one = {"alpha": 0.0, "alpha_target": 0.0}
     hole_error = 0.0
     total_error = 0.0
     hole_alpha = 0.0
@@ -34,11 +39,18 @@ def level_errors(filename, center, radius):
         x, y = float(r["x"]), float(r["y"])
         error = abs(float(r["alpha_target"]) - float(r["alpha"])) * area
         total_error += error
-        if math.hypot(x - center[0], y - center[1]) < radius:
+        distance = math.hypot(x - center[0], y - center[1])
+        if distance < SEARCH_FACTOR * radius:
+            for key in hole_below_one:
+                if float(r[key]) < 1:
+                    hole_below_one[key] += area
+        if distance < radius:
             hole_error += error
             hole_alpha += float(r["alpha"]) * area
             hole_area += area
-    return hole_error, hole_alpha / hole_area, total_error
+    radii = {k: math.sqrt(a / math.pi) for k, a in hole_below_one.items()}
+    return (hole_error, hole_alpha / hole_area, radii["alpha"],
+            radii["alpha_target"], total_error)
 
 
 def main():
@@ -55,11 +67,13 @@ def main():
         sys.exit("no labeling_level_<L>.csv in " + directory)
     level = lambda f: int(re.search(r"labeling_level_(\d+)\.csv", f).group(1))
     print("| level | error in the hole | mean alpha[U] in the hole | "
-          "labeling error |")
-    print("|---|---|---|---|")
+          "hole radius of alpha[U] / alpha* | labeling error |")
+    print("|---|---|---|---|---|")
     for f in sorted(files, key=level):
-        hole, mean_alpha, total = level_errors(f, center, radius)
-        print(f"| {level(f)} | {hole:.4g} | {mean_alpha:.4g} | {total:.4g} |")
+        hole, mean_alpha, r_alpha, r_target, total = level_errors(
+            f, center, radius)
+        print(f"| {level(f)} | {hole:.4g} | {mean_alpha:.4g} | "
+              f"{r_alpha:.3f} / {r_target:.3f} | {total:.4g} |")
 
 
 if __name__ == "__main__":

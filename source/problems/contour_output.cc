@@ -72,6 +72,13 @@ namespace PhaseField
         return {{g, g, g}};
       }
 
+      /**
+       * How far a value may exceed an even label and still be shown at it:
+       * alpha[U] overshoots its labels slightly (by 0.017 over label 2 on
+       * the torus at level 8), which must not double the gray scale.
+       */
+      constexpr double label_overshoot = 0.5;
+
       /** The largest label to show: even, at least 2. */
       template <int dim>
       double
@@ -80,7 +87,7 @@ namespace PhaseField
         double top = 2;
         for (const auto *values : {&labelings.target, &labelings.alpha})
           for (const double a : *values)
-            top = std::max(top, 2 * std::ceil(a / 2 - 1e-6));
+            top = std::max(top, 2 * std::ceil((a - label_overshoot) / 2));
         return top;
       }
 
@@ -110,7 +117,8 @@ namespace PhaseField
             canvas.set(x, height + y, gray(0.5 * (u[y * width + x] + 1)));
         const double top = top_label(labelings);
         const auto   row = [&](const double a) {
-          return static_cast<int>(std::lround(a / top * (height - 1)));
+          const long r = std::lround(a / top * (height - 1));
+          return static_cast<int>(std::clamp<long>(r, 0, height - 1));
         };
         for (unsigned int label = 0; label <= top; label += 2)
           for (unsigned int x = 0; x < width; ++x)
