@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <deal.II/lac/solver_control.h>
 #include <iomanip>
 #include <limits>
 #include <phasefield/core/constants.h>
@@ -69,6 +70,14 @@ namespace PhaseField
       find_descent_direction(const unsigned int it);
 
       /**
+       * Solve the shifted Newton system into update; where the linear
+       * solver does not converge, raise the shift and return false (the
+       * exception is passed on beyond max_shift).
+       */
+      bool
+      solve_shifted_system(const unsigned int it);
+
+      /**
        * Backtracking from the full update until the Armijo condition
        * holds; returns the number of halvings (max_damping_steps + 1: no
        * step accepted); trial, trial_merit and lambda are those of the
@@ -115,8 +124,8 @@ namespace PhaseField
     {
       for (;;)
         {
-          report.linear_iterations += problem.solve_shifted_jacobian(
-            z, residual, update, linear_solver, shift);
+          if (!solve_shifted_system(it))
+            continue;
           slope = residual * update;
           // Newton decrement -R.dz below the round-off of the merit: a
           // minimum to machine precision, even if the residual norm is
@@ -142,6 +151,34 @@ namespace PhaseField
           if (verbose)
             pcout << "    Newton iteration " << it
                   << ": not a descent direction, shift " << shift << std::endl;
+        }
+    }
+
+
+
+    bool
+    DescentNewton::solve_shifted_system(const unsigned int it)
+    {
+      try
+        {
+          report.linear_iterations += problem.solve_shifted_jacobian(
+            z, residual, update, linear_solver, shift);
+          return true;
+        }
+      catch (const SolverControl::NoConvergence &exc)
+        {
+          // a Krylov solve is collective: it fails on all ranks. A larger
+          // shift is better conditioned (the level-8 cube: CG did not
+          // reach its tolerance in 1000 iterations with shift 0)
+          report.linear_iterations += exc.last_step;
+          raise_shift();
+          if (shift > max_shift)
+            throw;
+          pcout << "    Newton iteration " << it
+                << ": the linear solver did not converge (residual "
+                << exc.last_residual << " after " << exc.last_step
+                << " iterations), shift " << shift << std::endl;
+          return false;
         }
     }
 

@@ -615,6 +615,17 @@ namespace PhaseField
 
   private:
     /**
+     * One attempt at the step of size @p tau from @p old_state, starting
+     * from @p state: Newton's method, and the descent method where it is
+     * needed (with U fixed outside a region, with restoration terms in the
+     * first step, and where Newton's method fails in the first step).
+     */
+    StepReport
+    attempt_step(const BlockVector &old_state,
+                 BlockVector       &state,
+                 const double       tau);
+
+    /**
      * GMRES iterations with an earlier factorisation of the 3-field
      * Jacobian (restoration terms) after which it is given up and the
      * Newton matrix is factorised (LinearSolver; GMRES may stagnate on
