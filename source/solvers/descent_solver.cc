@@ -112,6 +112,7 @@ namespace PhaseField
       double                    merit       = 0;
       double                    trial_merit = 0;
       double                    norm        = 0;
+      double                    target      = 0;
       double                    slope       = 0;
       double                    lambda      = 1;
       double                    shift       = 0;
@@ -122,6 +123,8 @@ namespace PhaseField
     Direction
     DescentNewton::find_descent_direction(const unsigned int it)
     {
+      internal::set_inexact_newton_tolerance(
+        linear_solver, control, it, target, norm);
       for (;;)
         {
           if (!solve_shifted_system(it))
@@ -232,8 +235,8 @@ namespace PhaseField
     StepReport
     DescentNewton::run()
     {
-      merit               = problem.project_and_energy(z);
-      const double target = internal::start_newton(
+      merit  = problem.project_and_energy(z);
+      target = internal::start_newton(
         problem, z, residual, control, pcout, verbose, norm, report);
       if (report.converged || !std::isfinite(norm) || !std::isfinite(merit))
         return report;

@@ -127,12 +127,6 @@ namespace PhaseField
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
     BlockVector residual(z), update(z), trial(z);
 
-    // The nonlinearity limits what the first update gains, so it needs
-    // little accuracy; later ones are solved just accurately enough to
-    // reach the target in one more iteration.
-    constexpr double first_linear_tolerance = 1e-3;
-    constexpr double linear_safety_factor   = 0.05;
-
     StepReport   report;
     double       norm   = 0;
     const double target = internal::start_newton(
@@ -150,11 +144,8 @@ namespace PhaseField
     bool watchdog_used = false;
     for (unsigned int it = 1; it <= control.max_iterations; ++it)
       {
-        if (control.adapt_linear_tolerance)
-          linear_solver.set_tolerance(
-            it == 1 ? first_linear_tolerance :
-                      std::min(first_linear_tolerance,
-                               linear_safety_factor * target / norm));
+        internal::set_inexact_newton_tolerance(
+          linear_solver, control, it, target, norm);
         unsigned int linear_iterations = 0;
         try
           {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <phasefield/solvers/nonlinear_system.h>
 #include <sstream>
@@ -53,6 +54,24 @@ namespace PhaseField
       pcout << "    Newton did not reach the tolerance in "
             << control.max_iterations << " iterations (residual " << norm
             << ", target " << target << ")." << std::endl;
+    }
+
+
+
+    void
+    set_inexact_newton_tolerance(LinearSolver        &linear_solver,
+                                 const NewtonControl &control,
+                                 const unsigned int   iteration,
+                                 const double         target,
+                                 const double         norm)
+    {
+      constexpr double first_linear_tolerance = 1e-3;
+      constexpr double linear_safety_factor   = 0.05;
+      if (control.adapt_linear_tolerance)
+        linear_solver.set_tolerance(
+          iteration == 1 ? first_linear_tolerance :
+                           std::min(first_linear_tolerance,
+                                    linear_safety_factor * target / norm));
     }
 
 

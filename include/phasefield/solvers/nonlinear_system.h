@@ -159,6 +159,20 @@ namespace PhaseField
                  double                                           &norm,
                  StepReport                                       &report);
 
+    /**
+     * The tolerance of the linear solve in Newton iteration @p iteration
+     * (inexact Newton), if control.adapt_linear_tolerance: loose in the
+     * first iteration, whose update the nonlinearity limits, then just
+     * accurate enough to reach @p target from the residual norm @p norm in
+     * one more iteration.
+     */
+    void
+    set_inexact_newton_tolerance(LinearSolver        &linear_solver,
+                                 const NewtonControl &control,
+                                 const unsigned int   iteration,
+                                 const double         target,
+                                 const double         norm);
+
     /** The message of a Newton method that ran out of iterations. */
     void
     print_newton_failure(const dealii::ConditionalOStream &pcout,
