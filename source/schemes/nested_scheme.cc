@@ -8,7 +8,6 @@
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/solvers/descent_solver.h>
 #include <phasefield/solvers/newton_solver.h>
-#include <utility>
 
 namespace PhaseField
 {
