@@ -42,9 +42,11 @@ namespace PhaseField
   public:
     /**
      * GMRES iterations with an earlier factorisation above which the next
-     * solve factorises its matrix (the reduced systems).
+     * solve factorises its matrix (the reduced systems). 4 rather than 8:
+     * the quarter circle at h = 2^-10 took 40 s instead of 47-49 s
+     * (doc/benchmarks.md, "The refactorisation threshold").
      */
-    static constexpr unsigned int default_refactorization_threshold = 8;
+    static constexpr unsigned int default_refactorization_threshold = 4;
 
     LinearSolver(const LinearSolverType type,
                  const double           relative_tolerance,
