@@ -4,8 +4,11 @@
 // start before the step is halved.
 //
 // A square of edge 0.4 at level 6, eps = 4h, Tau = 0.1h: Newton's method
-// does not converge in the first step (it did at Tau = 0.05h), and the
-// step used to be halved. Now the step is taken at the full Tau, and its
+// limited to 15 iterations does not converge in the first step (it did at
+// Tau = 0.05h), and the step used to be halved. (With the default limit
+// of 30 it converges in 17 iterations, to the same W: doc/benchmarks.md,
+// "The default Newton limit"; the test sets 15 so that the descent
+// method is exercised.) Now the step is taken at the full Tau, and its
 // result is that of the flow: measured, W = 11.535 and inside 0.2449 after
 // the one step against 11.507 and 0.2459 after two steps of Tau/2 (the
 // time-discretisation error of the two runs is O(Tau)); the start has
@@ -21,7 +24,9 @@
 namespace
 {
   std::string
-  square_prm(const double tau_over_h, const unsigned int steps)
+  square_prm(const double       tau_over_h,
+             const unsigned int steps,
+             const unsigned int newton_limit)
   {
     return R"(
 set Dimension = 2
@@ -42,6 +47,10 @@ subsection Time stepping
   set Inner tau = h^2
   set Number of steps = )" +
            std::to_string(steps) + R"(
+end
+subsection Newton
+  set Maximum iterations = )" +
+           std::to_string(newton_limit) + R"(
 end
 subsection Output
   set VTU interval = 0
@@ -65,13 +74,15 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string>                 header;
-  const auto one = Testing::run_willmore(square_prm(0.1, 1), header, "one");
-  const auto two = Testing::run_willmore(square_prm(0.05, 2), header, "two");
+  const unsigned int                       newton_limit = 15;
+  const auto                               one =
+    Testing::run_willmore(square_prm(0.1, 1, newton_limit), header, "one");
+  const auto two =
+    Testing::run_willmore(square_prm(0.05, 2, newton_limit), header, "two");
 
-  const double       tau          = 0.1 / 64;
-  const unsigned int newton_limit = 15;
-  const double       tolerance    = 1e-2;
-  const auto         value =
+  const double tau       = 0.1 / 64;
+  const double tolerance = 1e-2;
+  const auto   value =
     [&](const auto &rows, const unsigned int step, const std::string &name) {
       return rows[step][Testing::column(header, name)];
     };

@@ -554,10 +554,13 @@ namespace PhaseField
                       Patterns::Double(0.),
                       "Stop when sqrt(R.M^-1 R) is below this value.");
     prm.declare_entry("Maximum iterations",
-                      "15",
+                      "30",
                       Patterns::Integer(1),
                       "Newton iterations per time step before the step is "
-                      "retried with half the time step.");
+                      "retried with half the time step (or, in a first "
+                      "step, taken by the descent method). A first step "
+                      "from sharp data may need 15-25 damped iterations "
+                      "(doc/benchmarks.md, \"The default Newton limit\").");
     prm.declare_entry("Maximum damping steps",
                       "8",
                       Patterns::Integer(0),
