@@ -557,9 +557,10 @@ namespace PhaseField
                       "30",
                       Patterns::Integer(1),
                       "Newton iterations per time step before the step is "
-                      "retried with half the time step (or, in a first "
-                      "step, taken by the descent method). A first step "
-                      "from sharp data may need 15-25 damped iterations "
+                      "retried with half the time step (or first taken by "
+                      "the descent method where doc/willmore_flow.md, "
+                      "\"Newton's method\", says so). A first step from "
+                      "sharp data may need 15-25 damped iterations "
                       "(doc/benchmarks.md, \"The default Newton limit\").");
     prm.declare_entry("Maximum damping steps",
                       "8",
