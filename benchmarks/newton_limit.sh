@@ -21,30 +21,13 @@ prm=$source_dir/parameter_files
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-cat > "$work/square.prm" <<'EOF'
-set Dimension = 2
-subsection Geometry
-  set Shape = cube
-  set Sizes = 0.4
-end
-subsection Mesh
-  set Finest level = 6
-  set Coarsest level = 3
-end
-subsection Phase field
-  set Epsilon = 4*h
-end
-subsection Time stepping
-  set Tau = 0.1*h
-  set Inner tau = h^2
-  set Number of steps = 1
-end
-EOF
-
 # sets `command` to the program and arguments of case $1
 set_command() {
   case $1 in
-    square) command=(willmore_flow "$work/square.prm") ;;
+    square) command=(willmore_flow --set "Geometry/Shape=cube"
+                     --set "Geometry/Sizes=0.4" --set "Mesh/Finest level=6"
+                     --set "Time stepping/Tau=0.1*h"
+                     --set "Time stepping/Number of steps=1") ;;
     demo) command=(willmore_flow "$prm/willmore_flow/two_circles_demo.prm") ;;
     disc) command=(shape_from_contour "$prm/shape_from_contour/fig6_5_disc.prm") ;;
     cube6) command=(willmore_flow "$prm/willmore_flow/cube.prm") ;;
