@@ -10,6 +10,7 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/mesh/narrow_band.h>
 
@@ -313,9 +314,65 @@ namespace PhaseField
 
 
   template <int dim>
+  bool
+  Discretization<dim>::resolves_band(const BlockVector &fields) const
+  {
+    const MeshParameters &mesh = settings.mesh;
+    return NarrowBand::band_fits(dof_handler,
+                                 ghosted_copy(fields.block(0)),
+                                 mesh.band_width - mesh.band_margin,
+                                 std::numeric_limits<double>::infinity(),
+                                 mesh.finest_level);
+  }
+
+
+
+  template <int dim>
+  bool
+  Discretization<dim>::refine_to_band(const std::vector<BlockVector *> &fields)
+  {
+    const MeshParameters &mesh    = settings.mesh;
+    bool                  changed = false;
+    // one adaptation refines a cell by one level
+    for (unsigned int level = mesh.coarsest_level; level < mesh.finest_level;
+         ++level)
+      {
+        std::vector<Vector> ghosted;
+        for (const BlockVector *f : fields)
+          for (Vector &g : ghosted_copies(*f))
+            ghosted.push_back(std::move(g));
+        // coarsest level = finest level: no cell is flagged for coarsening
+        NarrowBand::flag_cells_from_phase_field(dof_handler,
+                                                ghosted[0],
+                                                mesh.band_width,
+                                                mesh.finest_level,
+                                                mesh.finest_level);
+        triangulation.prepare_coarsening_and_refinement();
+        if (n_flagged_cells(triangulation) == 0)
+          break;
+        execute_with_transfer(ghosted, fields);
+        changed = true;
+      }
+    return changed;
+  }
+
+
+
+  template <int dim>
   void
   Discretization<dim>::execute_with_transfer(const std::vector<Vector> &ghosted,
                                              BlockVector               &fields)
+  {
+    execute_with_transfer(ghosted, std::vector<BlockVector *>{&fields});
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::execute_with_transfer(
+    const std::vector<Vector>        &ghosted,
+    const std::vector<BlockVector *> &fields)
   {
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
     std::vector<const Vector *>                          in;
@@ -325,10 +382,13 @@ namespace PhaseField
     triangulation.execute_coarsening_and_refinement();
 
     setup_dofs();
-    reinit(fields, fields.n_blocks());
     std::vector<Vector *> out;
-    for (unsigned int b = 0; b < fields.n_blocks(); ++b)
-      out.push_back(&fields.block(b));
+    for (BlockVector *f : fields)
+      {
+        reinit(*f, f->n_blocks());
+        for (unsigned int b = 0; b < f->n_blocks(); ++b)
+          out.push_back(&f->block(b));
+      }
     transfer.interpolate(out);
   }
 

@@ -27,19 +27,6 @@ namespace PhaseField
       setup.outer_energy.area_weight     = parameters.model.area_weight;
       return setup;
     }
-
-    /** The sum of the iteration counts of two sub-steps. */
-    StepReport
-    combine(const StepReport &first, const StepReport &second)
-    {
-      StepReport sum = second;
-      sum.newton_iterations += first.newton_iterations;
-      sum.linear_iterations += first.linear_iterations;
-      sum.al_iterations += first.al_iterations;
-      sum.tr_iterations += first.tr_iterations;
-      sum.initial_residual_norm = first.initial_residual_norm;
-      return sum;
-    }
   } // namespace
 
 

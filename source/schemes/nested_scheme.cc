@@ -889,6 +889,29 @@ namespace PhaseField
 
 
 
+  template <int dim>
+  double
+  NestedStep<dim>::energy_roundoff(const BlockVector &z,
+                                   const double       energy) const
+  {
+    const Vector &u = z.block(Field::U);
+    const Vector &v = z.block(Field::V);
+    Vector        r(u);
+    inner_residual(u, v, r);
+    Vector difference(v);
+    difference -= u;
+    const auto norm = [this](const Vector &x) {
+      return std::sqrt(ops.mass_product(x, x));
+    };
+    const double v_error =
+      ops.dual_norm(r) +
+      std::numeric_limits<double>::epsilon() * (norm(u) + norm(v));
+    return MinimizationProblem::energy_roundoff(z, energy) +
+           weights.a * norm(difference) * v_error;
+  }
+
+
+
   // ---------------------------------------------------------------------
   // The scheme: Algorithm 3.1, one step per time step, the energy law
   // ---------------------------------------------------------------------

@@ -16,9 +16,6 @@ namespace PhaseField
 
     // sufficient decrease of the Armijo condition
     constexpr double armijo = 1e-4;
-    // the merit function is a sum of terms of its own size: relative
-    // round-off below which a change is not significant
-    constexpr double merit_roundoff = Constants::roundoff;
     // the Levenberg-Marquardt shift, in units of the mass matrix: the
     // first non-zero value, the factor of its changes, and the value at
     // which the direction is the steepest descent direction to round-off
@@ -109,13 +106,15 @@ namespace PhaseField
       const bool                verbose;
       BlockVector               residual, update, trial;
       StepReport                report;
-      double                    merit       = 0;
-      double                    trial_merit = 0;
-      double                    norm        = 0;
-      double                    target      = 0;
-      double                    slope       = 0;
-      double                    lambda      = 1;
-      double                    shift       = 0;
+      double                    merit = 0;
+      /** MinimizationProblem::energy_roundoff() of merit at z. */
+      double merit_noise = 0;
+      double trial_merit = 0;
+      double norm        = 0;
+      double target      = 0;
+      double slope       = 0;
+      double lambda      = 1;
+      double shift       = 0;
     };
 
 
@@ -131,9 +130,10 @@ namespace PhaseField
             continue;
           slope = residual * update;
           // Newton decrement -R.dz below the round-off of the merit: a
-          // minimum to machine precision, even if the residual norm is
-          // above the target (its round-off grows with a = tau/ttau^2)
-          if (shift == 0 && std::abs(slope) <= merit_roundoff * std::abs(merit))
+          // minimum to the precision of the merit, even if the residual
+          // norm is above the target (its round-off grows with
+          // a = tau/ttau^2)
+          if (shift == 0 && std::abs(slope) <= merit_noise)
             {
               if (verbose)
                 pcout << "    Newton iteration " << it
@@ -200,8 +200,7 @@ namespace PhaseField
           problem.distribute_constraints(trial);
           trial_merit = problem.project_and_energy(trial);
           if (std::isfinite(trial_merit) &&
-              trial_merit <= merit + armijo * lambda * slope +
-                               merit_roundoff * std::abs(merit))
+              trial_merit <= merit + armijo * lambda * slope + merit_noise)
             break;
         }
       return damping;
@@ -235,8 +234,9 @@ namespace PhaseField
     StepReport
     DescentNewton::run()
     {
-      merit  = problem.project_and_energy(z);
-      target = internal::start_newton(
+      merit       = problem.project_and_energy(z);
+      merit_noise = problem.energy_roundoff(z, merit);
+      target      = internal::start_newton(
         problem, z, residual, control, pcout, verbose, norm, report);
       if (report.converged || !std::isfinite(norm) || !std::isfinite(merit))
         return report;
@@ -284,8 +284,9 @@ namespace PhaseField
           else if (damping >= 2)
             raise_shift();
 
-          z     = trial;
-          merit = trial_merit;
+          z           = trial;
+          merit       = trial_merit;
+          merit_noise = problem.energy_roundoff(z, merit);
           problem.residual(z, residual);
           norm                       = problem.residual_norm(residual);
           report.final_residual_norm = norm;

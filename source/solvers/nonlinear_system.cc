@@ -17,6 +17,20 @@ namespace PhaseField
 
 
 
+  StepReport
+  combine(const StepReport &first, const StepReport &second)
+  {
+    StepReport sum = second;
+    sum.newton_iterations += first.newton_iterations;
+    sum.linear_iterations += first.linear_iterations;
+    sum.al_iterations += first.al_iterations;
+    sum.tr_iterations += first.tr_iterations;
+    sum.initial_residual_norm = first.initial_residual_norm;
+    return sum;
+  }
+
+
+
   namespace internal
   {
     double

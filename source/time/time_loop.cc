@@ -210,16 +210,18 @@ namespace PhaseField
     const unsigned int checkpoints = settings.checkpoint_interval;
     for (unsigned int step = first_step; step <= final_step; ++step)
       {
-        old_state              = state;
-        const double tried_tau = first_step_size(step);
-        double       tau       = tried_tau;
-        const double energy_before =
-          scheme.has_energy_law() ? scheme.energy_law_energy(state) : 0.;
-        const StepReport report = advance_with_halving(step, state, tau);
+        old_state                  = state;
+        const double     tried_tau = first_step_size(step);
+        double           tau       = tried_tau;
+        const StepReport report = advance_on_resolving_mesh(step, state, tau);
         if (settings.regrow_step_size)
           step_size_limit = tau < tried_tau ? tau : 2 * tau;
+        // on the mesh of the step, which the step may have refined
         if (scheme.has_energy_law() && client.energy_law_applies())
-          check_energy_law(step, state, energy_before, tau);
+          check_energy_law(step,
+                           state,
+                           scheme.energy_law_energy(old_state),
+                           tau);
         state_tau = tau;
         time += tau;
         last_step = step;
@@ -285,15 +287,74 @@ namespace PhaseField
 
   template <int dim>
   StepReport
+  TimeLoop<dim>::advance_on_resolving_mesh(const unsigned int step,
+                                           BlockVector       &state,
+                                           double            &tau)
+  {
+    StepReport report = advance_with_halving(step, state, state_tau, tau);
+    for (unsigned int repetition = 1;
+         settings.adaptive && client.repeats_unresolved_steps() &&
+         !discretization.resolves_band(state);
+         ++repetition)
+      {
+        if (repetition > max_step_repetitions)
+          {
+            pcout << "  Warning: step " << step
+                  << ": the interface left the band of finest cells again "
+                     "after "
+                  << max_step_repetitions
+                  << " repetitions on refined meshes; the step is kept"
+                  << std::endl;
+            break;
+          }
+        pcout << "  step " << step
+              << ": the interface left the band of finest cells; "
+                 "repeating the step on the mesh refined there"
+              << std::endl;
+        refine_to_band(state, tau);
+        const double start_tau = tau;
+        report =
+          combine(report, advance_with_halving(step, state, start_tau, tau));
+      }
+    return report;
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::refine_to_band(BlockVector &state, const double tau)
+  {
+    TimerOutput::Scope t(timer, "mesh: adapt");
+    if (!discretization.refine_to_band({&state, &old_state}))
+      return;
+    for (BlockVector *fields : {&state, &old_state})
+      {
+        client.after_remesh(*fields);
+        discretization.distribute_constraints(*fields);
+      }
+    // old_state last: a scheme may keep data of the start of the step
+    // (the semi-implicit scheme's F(U^k))
+    scheme.after_remesh(state, tau);
+    scheme.after_remesh(old_state, state_tau);
+    for (BlockVector *fields : {&state, &old_state})
+      discretization.distribute_constraints(*fields);
+  }
+
+
+
+  template <int dim>
+  StepReport
   TimeLoop<dim>::advance_with_halving(const unsigned int step,
                                       BlockVector       &state,
+                                      const double       start_tau,
                                       double            &tau)
   {
     TimerOutput::Scope t(timer, "time step");
     const BlockVector  saved = state;
     for (unsigned int attempt = 0;; ++attempt)
       {
-        scheme.prepare_step(state, state_tau, tau);
+        scheme.prepare_step(state, start_tau, tau);
         const StepReport report = client.advance(scheme, old_state, state, tau);
         if (report.converged)
           return report;

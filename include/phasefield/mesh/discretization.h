@@ -96,6 +96,26 @@ namespace PhaseField
                          const bool   use_margin = false);
 
     /**
+     * Whether the band of the phase field in block 0 of @p fields,
+     * narrowed by `Mesh / Band margin`, lies on the finest level: whether
+     * the current mesh resolves @p fields as a re-meshing would leave it
+     * (the coarsening side is not checked). Collective.
+     */
+    bool
+    resolves_band(const BlockVector &fields) const;
+
+    /**
+     * Refine, never coarsen, until the band of the phase field in block 0
+     * of the first of @p fields is on the finest level, transferring all
+     * blocks of all @p fields (constraints not yet distributed). The band
+     * of any earlier field on the mesh is kept: the mesh after a time step
+     * whose interface left the band, on which the step is repeated.
+     * Returns whether the mesh changed. Collective.
+     */
+    bool
+    refine_to_band(const std::vector<BlockVector *> &fields);
+
+    /**
      * Make @p level (not below the current one) the finest level of the
      * narrow band and refine the band of the phase field in block 0 of
      * @p fields to it, transferring all blocks (constraints not yet
@@ -275,6 +295,14 @@ namespace PhaseField
     void
     execute_with_transfer(const std::vector<Vector> &ghosted,
                           BlockVector               &fields);
+
+    /**
+     * execute_with_transfer() for several block vectors: @p ghosted holds
+     * the copies of all blocks of all @p fields, in order.
+     */
+    void
+    execute_with_transfer(const std::vector<Vector>        &ghosted,
+                          const std::vector<BlockVector *> &fields);
 
     /**
      * Gauss points per direction beyond the degree of the elements in

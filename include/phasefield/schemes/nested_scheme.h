@@ -247,6 +247,19 @@ namespace PhaseField
     double
     project_and_energy(BlockVector &z) override;
     /**
+     * The default plus a |V-U|_M (||R_P(U, V)||_{M^-1} + DBL_EPSILON
+     * (|U|_M + |V|_M)): the term (a/2)|V-U|_M^2 of outer_energy() changes
+     * by a (V-U)^T M dV for an error dV of V, which the inner problem
+     * leaves at the size of its residual (its Jacobian is about M) and
+     * the subtraction V - U at the round-off of U and V. Relative to the
+     * energy, about a (a/2)|V-U|^2 that is all but the whole of it, this is
+     * 2 dV / |V-U|: it grows as V - U = ttau H shrinks (the cross at
+     * level 10, a = 3.2e7: the energy did not change in 12 digits while
+     * the default allowance of 1e-14 failed every Armijo test).
+     */
+    double
+    energy_roundoff(const BlockVector &z, const double energy) const override;
+    /**
      * The Newton system with mu M added to the UU block: the 3-field
      * solve with restoration terms, the elimination otherwise.
      */

@@ -1,8 +1,10 @@
 #ifndef phasefield_solvers_nonlinear_system_h
 #define phasefield_solvers_nonlinear_system_h
 
+#include <cmath>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/core/constants.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/solvers/linear_solver.h>
 
@@ -28,6 +30,13 @@ namespace PhaseField
     double       initial_residual_norm = 0;
     double       final_residual_norm   = 0;
   };
+
+  /**
+   * The report of two solves one after the other: the iteration counts
+   * summed, the initial residual of @p first, the rest of @p second.
+   */
+  StepReport
+  combine(const StepReport &first, const StepReport &second);
 
   /** A nonlinear system R(z) = 0 for a block vector z. */
   class NonlinearSystem
@@ -95,6 +104,21 @@ namespace PhaseField
      */
     virtual double
     project_and_energy(BlockVector &z) = 0;
+
+    /**
+     * How much the @p energy that project_and_energy() returned at @p z
+     * can differ from the exact energy there through round-off and the
+     * tolerance of the projection: changes of phi below it are not
+     * significant (the descent method's stationarity and Armijo tests).
+     * The default: Constants::roundoff relative to the energy, for an
+     * energy computed to machine precision from terms of its own size.
+     */
+    virtual double
+    energy_roundoff(const BlockVector &z, const double energy) const
+    {
+      (void)z;
+      return Constants::roundoff * std::abs(energy);
+    }
 
     /**
      * solve_jacobian() with the Hessian of the free fields shifted by

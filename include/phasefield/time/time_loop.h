@@ -67,6 +67,16 @@ namespace PhaseField
       }
 
       /**
+       * Is a step whose interface left the band of finest cells repeated
+       * on the mesh refined there (TimeLoop::advance_on_resolving_mesh())?
+       */
+      virtual bool
+      repeats_unresolved_steps() const
+      {
+        return true;
+      }
+
+      /**
        * After the statistics row of step @p step with the @p energies of
        * @p state: should the run end here, before its last step? (The
        * automatic level transition of shape from contour.)
@@ -262,12 +272,38 @@ namespace PhaseField
 
     /**
      * Step @p step from old_state into @p state with the step size
+     * @p tau, halved on failure (@p tau is then the size taken). Where
+     * the interface of the result left the band of finest cells
+     * (Discretization::resolves_band()), the mesh is refined there and
+     * the step repeated from old_state on it, with the result as the
+     * start value: a minimiser computed on coarser cells is not the
+     * minimiser on a mesh that resolves it, and its energy changes at the
+     * next re-meshing (edge restoration at level 10: by half or more).
+     */
+    StepReport
+    advance_on_resolving_mesh(const unsigned int step,
+                              BlockVector       &state,
+                              double            &tau);
+
+    /**
+     * Step @p step from old_state into @p state with the step size
      * @p tau, halved on failure (@p tau is then the size taken).
+     * @p start_tau is the step size of which @p state (the start value)
+     * is the result.
      */
     StepReport
     advance_with_halving(const unsigned int step,
                          BlockVector       &state,
+                         const double       start_tau,
                          double            &tau);
+
+    /**
+     * Refine the mesh, never coarsen it, to the band of @p state, and
+     * restore what the transfer broke in @p state (a result of step size
+     * @p tau) and old_state.
+     */
+    void
+    refine_to_band(BlockVector &state, const double tau);
 
     /**
      * Thesis Cor. 3.3: on a fixed mesh the minimiser of the outer energy
@@ -326,6 +362,13 @@ namespace PhaseField
     /** The last step taken. */
     unsigned int last_step = 0;
     double       time      = 0;
+    /**
+     * Repetitions of a step on refined meshes (advance_on_resolving_mesh())
+     * before the result is kept with a warning: each one refines where the
+     * interface of the last result went, which the next result leaves
+     * only if it moves on by the band margin.
+     */
+    static constexpr unsigned int max_step_repetitions = 3;
     /** The step size the multipliers of the current state belong to. */
     double state_tau;
     /**
