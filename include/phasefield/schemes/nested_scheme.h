@@ -252,7 +252,7 @@ namespace PhaseField
      * by a (V-U)^T M dV for an error dV of V, which the inner problem
      * leaves at the size of its residual (its Jacobian is about M) and
      * the subtraction V - U at the round-off of U and V. Relative to the
-     * energy, about a (a/2)|V-U|^2 that is all but the whole of it, this is
+     * energy, of which (a/2)|V-U|^2 is nearly all, this is about
      * 2 dV / |V-U|: it grows as V - U = ttau H shrinks (the cross at
      * level 10, a = 3.2e7: the energy did not change in 12 digits while
      * the default allowance of 1e-14 failed every Armijo test).
