@@ -258,7 +258,7 @@ namespace PhaseField
     const MeshParameters &mesh       = settings.mesh;
     const double          band_width = band_scale * mesh.band_width;
     if (!use_margin || mesh.band_margin <= 0)
-      return adapt_band_once(fields, band_width);
+      return adapt_band_once({&fields}, band_width, mesh.coarsest_level);
     // finest cells are kept out to the coarsening band plus the margin
     const double margin      = band_scale * mesh.band_margin;
     const double outer_width = settings.coarsening_band_factor * band_width;
@@ -279,7 +279,7 @@ namespace PhaseField
          level < mesh.finest_level && !fits(band_width);
          ++level)
       {
-        if (!adapt_band_once(fields, band_width))
+        if (!adapt_band_once({&fields}, band_width, mesh.coarsest_level))
           break;
         changed = true;
       }
@@ -290,16 +290,20 @@ namespace PhaseField
 
   template <int dim>
   bool
-  Discretization<dim>::adapt_band_once(BlockVector &fields,
-                                       const double band_width)
+  Discretization<dim>::adapt_band_once(const std::vector<BlockVector *> &fields,
+                                       const double       band_width,
+                                       const unsigned int coarsest_level)
   {
-    const MeshParameters     &mesh    = settings.mesh;
-    const std::vector<Vector> ghosted = ghosted_copies(fields);
+    const MeshParameters &mesh = settings.mesh;
+    std::vector<Vector>   ghosted;
+    for (const BlockVector *f : fields)
+      for (Vector &g : ghosted_copies(*f))
+        ghosted.push_back(std::move(g));
     NarrowBand::flag_cells_from_phase_field(dof_handler,
                                             ghosted[0],
                                             band_width,
                                             mesh.finest_level,
-                                            mesh.coarsest_level,
+                                            coarsest_level,
                                             settings.coarsening_band_factor *
                                               band_width);
     // smoothing removes flags that cannot be executed (2:1 balance,
@@ -333,24 +337,13 @@ namespace PhaseField
   {
     const MeshParameters &mesh    = settings.mesh;
     bool                  changed = false;
-    // one adaptation refines a cell by one level
+    // one adaptation refines a cell by one level; with the finest level
+    // as the coarsest one no cell is coarsened
     for (unsigned int level = mesh.coarsest_level; level < mesh.finest_level;
          ++level)
       {
-        std::vector<Vector> ghosted;
-        for (const BlockVector *f : fields)
-          for (Vector &g : ghosted_copies(*f))
-            ghosted.push_back(std::move(g));
-        // coarsest level = finest level: no cell is flagged for coarsening
-        NarrowBand::flag_cells_from_phase_field(dof_handler,
-                                                ghosted[0],
-                                                mesh.band_width,
-                                                mesh.finest_level,
-                                                mesh.finest_level);
-        triangulation.prepare_coarsening_and_refinement();
-        if (n_flagged_cells(triangulation) == 0)
+        if (!adapt_band_once(fields, mesh.band_width, mesh.finest_level))
           break;
-        execute_with_transfer(ghosted, fields);
         changed = true;
       }
     return changed;

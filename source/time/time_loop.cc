@@ -328,17 +328,22 @@ namespace PhaseField
     TimerOutput::Scope t(timer, "mesh: adapt");
     if (!discretization.refine_to_band({&state, &old_state}))
       return;
-    for (BlockVector *fields : {&state, &old_state})
-      {
-        client.after_remesh(*fields);
-        discretization.distribute_constraints(*fields);
-      }
     // old_state last: a scheme may keep data of the start of the step
     // (the semi-implicit scheme's F(U^k))
-    scheme.after_remesh(state, tau);
-    scheme.after_remesh(old_state, state_tau);
-    for (BlockVector *fields : {&state, &old_state})
-      discretization.distribute_constraints(*fields);
+    restore_after_transfer(state, tau);
+    restore_after_transfer(old_state, state_tau);
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::restore_after_transfer(BlockVector &fields, const double tau)
+  {
+    client.after_remesh(fields);
+    discretization.distribute_constraints(fields);
+    scheme.after_remesh(fields, tau);
+    discretization.distribute_constraints(fields);
   }
 
 
@@ -410,10 +415,7 @@ namespace PhaseField
     if (!discretization.adapt_to_phase_field(state, 1., true))
       return;
     discretization.reinit(old_state, state.n_blocks());
-    client.after_remesh(state);
-    discretization.distribute_constraints(state);
-    scheme.after_remesh(state, state_tau);
-    discretization.distribute_constraints(state);
+    restore_after_transfer(state, state_tau);
     if (report_energy)
       {
         const auto precision = pcout.get_stream().precision(10);

@@ -278,11 +278,16 @@ namespace PhaseField
 
     /**
      * One adaptation of the band of @p band_width (in units of epsilon) to
-     * the phase field in block 0 of @p fields, as adapt_to_phase_field()
-     * without the margin: false if no flag is left after smoothing.
+     * the phase field in block 0 of the first of @p fields, as
+     * adapt_to_phase_field() without the margin, coarsening down to
+     * @p coarsest_level (the finest level: refinement only); all blocks
+     * of all @p fields are transferred. False if no flag is left after
+     * smoothing.
      */
     bool
-    adapt_band_once(BlockVector &fields, const double band_width);
+    adapt_band_once(const std::vector<BlockVector *> &fields,
+                    const double                      band_width,
+                    const unsigned int                coarsest_level);
 
     /** @p fields with the ghost entries the transfer reads. */
     std::vector<Vector>

@@ -306,6 +306,15 @@ namespace PhaseField
     refine_to_band(BlockVector &state, const double tau);
 
     /**
+     * After a transfer to a new mesh, restore what it broke in @p fields,
+     * a state of step size @p tau: the client's data (fixed values), the
+     * constraints, the scheme's fields (Client::after_remesh(),
+     * TimeSteppingScheme::after_remesh()).
+     */
+    void
+    restore_after_transfer(BlockVector &fields, const double tau);
+
+    /**
      * Thesis Cor. 3.3: on a fixed mesh the minimiser of the outer energy
      * satisfies E^{k+1} + dissipation <= E^k; warn if the step found
      * another critical point.
