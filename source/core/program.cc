@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <iostream>
+#include <phasefield/core/blas_kernels.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/program.h>
 #include <sstream>
@@ -184,6 +185,9 @@ namespace PhaseField
   {
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const std::string blas_message = select_blas_kernels();
+    if (root && !blas_message.empty())
+      std::cout << blas_message << "\n" << std::endl;
     ParameterHandler prm;
     declare(prm);
 
