@@ -940,6 +940,9 @@ namespace PhaseField
         std::make_unique<typename NestedStep<dim>::ReducedMatrices>())
   {
     linear_solver->set_constant_matrix(linear_model());
+    // every step passes mesh_matrices, refilled in place; reset_solver()
+    // replaces both together
+    linear_solver->set_persistent_matrices(true);
   }
 
 

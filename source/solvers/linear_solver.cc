@@ -1,3 +1,4 @@
+#include <cmath>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -185,15 +186,42 @@ namespace PhaseField
   {
     Assert(solver_type == LinearSolverType::iterative, ExcInternalError());
     const ProductFormMatrix s(k_hat, w, d, inverse_mass);
-    if (!constant_matrix || !schur_preconditioner ||
-        schur_preconditioner->size() != g.m())
+    const bool              kept_is_valid =
+      schur_preconditioner && schur_preconditioner->size() == g.m();
+    unsigned int failed_iterations = 0;
+    if (kept_is_valid && (constant_matrix || (persistent_matrices &&
+                                              !schur_preconditioner_worn())))
       {
-        // free the old multigrid hierarchy before the new one is built
-        schur_preconditioner.reset();
-        schur_preconditioner =
-          std::make_unique<SchurPreconditioner>(g, mass, interface_mode);
-        ++factorization_count;
+        try
+          {
+            return cg_solve_product_form(s, solution, rhs);
+          }
+        catch (const SolverControl::NoConvergence &failure)
+          {
+            // a kept hierarchy of other values: set it up for these
+            if (constant_matrix)
+              throw;
+            failed_iterations = failure.last_step;
+          }
       }
+    // free the old multigrid hierarchy before the new one is built
+    schur_preconditioner.reset();
+    schur_preconditioner =
+      std::make_unique<SchurPreconditioner>(g, mass, interface_mode);
+    ++factorization_count;
+    cg_solve_product_form(s, solution, rhs);
+    fresh_iterations_per_decade = last_iterations_per_decade;
+    last_iterations += failed_iterations;
+    return last_iterations;
+  }
+
+
+
+  unsigned int
+  LinearSolver::cg_solve_product_form(const ProductFormMatrix       &s,
+                                      TrilinosWrappers::MPI::Vector &solution,
+                                      const TrilinosWrappers::MPI::Vector &rhs)
+  {
     SolverControl                           control(max_iterations,
                           tolerance * rhs.l2_norm(),
                           false,
@@ -202,6 +230,18 @@ namespace PhaseField
     solution = 0;
     cg.solve(s, solution, rhs, *schur_preconditioner);
     last_iterations = control.last_step();
+    // iterations per decade of residual reduction
+    last_iterations_per_decade =
+      last_iterations / std::max(1., -std::log10(tolerance));
     return last_iterations;
+  }
+
+
+
+  bool
+  LinearSolver::schur_preconditioner_worn() const
+  {
+    return last_iterations_per_decade >
+           multigrid_reuse_factor * fresh_iterations_per_decade;
   }
 } // namespace PhaseField

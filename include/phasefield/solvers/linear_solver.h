@@ -12,6 +12,7 @@
 namespace PhaseField
 {
   class SchurPreconditioner;
+  class ProductFormMatrix;
 
   /**
    * The linear solver of the Newton systems of all schemes (the reduced
@@ -47,6 +48,19 @@ namespace PhaseField
      * (doc/benchmarks.md, "The refactorisation threshold").
      */
     static constexpr unsigned int default_refactorization_threshold = 4;
+
+    /**
+     * Iterative type with set_persistent_matrices(): the multigrid
+     * hierarchies of solve_product_form() are kept for the following
+     * solves (later Newton iterations and time steps on the same mesh)
+     * until a solve with them needs more than this factor times the
+     * iterations per decade of residual reduction of the first solve
+     * after its set-up. The set-up (aggregation and Galerkin products) was
+     * a fifth of the time of the 3D sphere at level 6; keeping the
+     * hierarchy for all 10 steps raised its CG iterations by 4% only
+     * (doc/benchmarks.md, "Keeping the multigrid hierarchy").
+     */
+    static constexpr double multigrid_reuse_factor = 1.5;
 
     LinearSolver(const LinearSolverType type,
                  const double           relative_tolerance,
@@ -95,9 +109,11 @@ namespace PhaseField
      * and for positive semi-definite Khat the preconditioned matrix has
      * its spectrum in [1/2, 1] (the Schur complement preconditioner of
      * Boyanova, Do-Quang and Neytcheva for Cahn-Hilliard systems). The
-     * multigrid hierarchy is built anew at every call (one "factorization"
-     * in n_factorizations()). @p interface_mode, if given, joins the
-     * constant in the near null space of these hierarchies
+     * multigrid hierarchies are built for every call, or with
+     * set_persistent_matrices() kept while they precondition well
+     * (multigrid_reuse_factor); each set-up counts as a
+     * "factorization" in n_factorizations(). @p interface_mode, if given, joins
+     * the constant in the near null space of these hierarchies
      * (SchurPreconditioner). Returns the CG iterations.
      */
     unsigned int
@@ -181,6 +197,20 @@ namespace PhaseField
     }
 
     /**
+     * Declare whether the matrices passed to the following solves are the
+     * same objects, refilled in place, until the next reset(): a
+     * multigrid hierarchy refers to its fine-level matrix, so only then
+     * may solve_product_form() keep it for later solves with other values
+     * (see multigrid_reuse_factor). Its fine-level smoother then applies
+     * the current matrix, its coarse levels those of the set-up.
+     */
+    void
+    set_persistent_matrices(const bool persistent)
+    {
+      persistent_matrices = persistent;
+    }
+
+    /**
      * Number of preconditioner set-ups so far: LU factorisations (direct)
      * or multigrid hierarchies of solve_product_form() (iterative).
      */
@@ -199,6 +229,23 @@ namespace PhaseField
   private:
     /** GMRES restart length. */
     static constexpr unsigned int gmres_restart = 50;
+
+    /**
+     * CG on @p s preconditioned with the stored SchurPreconditioner;
+     * throws SolverControl::NoConvergence.
+     */
+    unsigned int
+    cg_solve_product_form(const ProductFormMatrix                     &s,
+                          dealii::TrilinosWrappers::MPI::Vector       &solution,
+                          const dealii::TrilinosWrappers::MPI::Vector &rhs);
+
+    /**
+     * Whether the last solve with the stored SchurPreconditioner needed
+     * more than multigrid_reuse_factor times the iterations per decade of
+     * the first one after its set-up.
+     */
+    bool
+    schur_preconditioner_worn() const;
 
     /** Direct type: GMRES preconditioned with a (possibly earlier) LU. */
     unsigned int
@@ -236,10 +283,20 @@ namespace PhaseField
     std::unique_ptr<DirectFactorization> factorization;
     unsigned int                         last_iterations     = 0;
     unsigned int                         factorization_count = 0;
-    /** The product-form preconditioner, kept with set_constant_matrix(). */
+    /**
+     * The product-form preconditioner, kept while it is not worn (always
+     * with set_constant_matrix()).
+     */
     std::unique_ptr<SchurPreconditioner> schur_preconditioner;
-    bool                                 constant_matrix            = false;
-    unsigned int                         pivoting_workspace_percent = 0;
+    /**
+     * CG iterations per decade of residual reduction: of the first solve
+     * after the set-up of schur_preconditioner and of the last solve.
+     */
+    double       fresh_iterations_per_decade = 0;
+    double       last_iterations_per_decade  = 0;
+    bool         constant_matrix             = false;
+    bool         persistent_matrices         = false;
+    unsigned int pivoting_workspace_percent  = 0;
   };
 } // namespace PhaseField
 
