@@ -210,7 +210,7 @@ namespace PhaseField
       std::make_unique<SchurPreconditioner>(g, mass, interface_mode);
     ++factorization_count;
     cg_solve_product_form(s, solution, rhs);
-    fresh_iterations_per_decade = last_iterations_per_decade;
+    fresh_solve = last_solve;
     last_iterations += failed_iterations;
     return last_iterations;
   }
@@ -230,9 +230,7 @@ namespace PhaseField
     solution = 0;
     cg.solve(s, solution, rhs, *schur_preconditioner);
     last_iterations = control.last_step();
-    // iterations per decade of residual reduction
-    last_iterations_per_decade =
-      last_iterations / std::max(1., -std::log10(tolerance));
+    last_solve      = {last_iterations, -std::log10(tolerance)};
     return last_iterations;
   }
 
@@ -241,7 +239,12 @@ namespace PhaseField
   bool
   LinearSolver::schur_preconditioner_worn() const
   {
-    return last_iterations_per_decade >
-           multigrid_reuse_factor * fresh_iterations_per_decade;
+    // a tighter tolerance needs proportionally more iterations, a looser
+    // one is not credited (the first iterations reduce the residual less
+    // than later ones)
+    const double expected =
+      fresh_solve.iterations *
+      std::max(1., last_solve.decades / fresh_solve.decades);
+    return last_solve.iterations > multigrid_reuse_factor * expected;
   }
 } // namespace PhaseField

@@ -54,11 +54,11 @@ namespace PhaseField
      * hierarchies of solve_product_form() are kept for the following
      * solves (later Newton iterations and time steps on the same mesh)
      * until a solve with them needs more than this factor times the
-     * iterations per decade of residual reduction of the first solve
-     * after its set-up. The set-up (aggregation and Galerkin products) was
-     * a fifth of the time of the 3D sphere at level 6; keeping the
-     * hierarchy for all 10 steps raised its CG iterations by 4% only
-     * (doc/benchmarks.md, "Keeping the multigrid hierarchy").
+     * iterations of the first solve after its set-up (scaled by the
+     * tolerances, schur_preconditioner_worn()). The set-up (aggregation and
+     * Galerkin products) was a fifth of the time of the 3D sphere at level 6;
+     * keeping the hierarchy for all 10 steps raised its CG iterations by 4%
+     * only (doc/benchmarks.md, "Keeping the multigrid hierarchy").
      */
     static constexpr double multigrid_reuse_factor = 1.5;
 
@@ -241,8 +241,9 @@ namespace PhaseField
 
     /**
      * Whether the last solve with the stored SchurPreconditioner needed
-     * more than multigrid_reuse_factor times the iterations per decade of
-     * the first one after its set-up.
+     * more than multigrid_reuse_factor times the iterations of the first
+     * one after its set-up, the latter scaled up by the ratio of the
+     * tolerances in decades where the last one was tighter.
      */
     bool
     schur_preconditioner_worn() const;
@@ -288,15 +289,20 @@ namespace PhaseField
      * with set_constant_matrix()).
      */
     std::unique_ptr<SchurPreconditioner> schur_preconditioner;
+    /** Iterations of a CG solve and its tolerance in decades. */
+    struct SolveRecord
+    {
+      unsigned int iterations = 0;
+      double       decades    = 1;
+    };
     /**
-     * CG iterations per decade of residual reduction: of the first solve
-     * after the set-up of schur_preconditioner and of the last solve.
+     * The first solve after the set-up of schur_preconditioner and the
+     * last solve.
      */
-    double       fresh_iterations_per_decade = 0;
-    double       last_iterations_per_decade  = 0;
-    bool         constant_matrix             = false;
-    bool         persistent_matrices         = false;
-    unsigned int pivoting_workspace_percent  = 0;
+    SolveRecord  fresh_solve, last_solve;
+    bool         constant_matrix            = false;
+    bool         persistent_matrices        = false;
+    unsigned int pivoting_workspace_percent = 0;
   };
 } // namespace PhaseField
 
