@@ -17,7 +17,7 @@ namespace PhaseField
    * kernels if the CPU has AVX-512 (F, CD, DQ, BW, VL), else its Haswell
    * kernels if it has AVX2 and FMA, as the environment variable
    * OPENBLAS_CORETYPE would have at load time. The quarter circle at
-   * h = 2^-9 on 2 ranks then takes 9.1 s instead of 10.9 s
+   * h = 2^-9 on 2 ranks then takes 8.5-8.75 s instead of 10.9-11.1 s
    * (doc/benchmarks.md, "OpenBLAS kernels").
    *
    * Nothing is changed if OPENBLAS_CORETYPE is set (the user's choice),
