@@ -176,18 +176,17 @@ main(int argc, char **argv)
   log << "not persistent: 2 set-ups for 2 solves: "
       << yes(plain.n_factorizations() == 2) << '\n';
 
-  // a worn hierarchy: the solve with the poor G needs more than the
-  // factor times the first iterations, so the next solve sets up anew
+  // a worn hierarchy: the solve with the poor G would need more than the
+  // factor times the first iterations; it is given up there, the
+  // hierarchy set up for this G and the solve repeated
   refill(ops, 1e-3, g);
   const auto worn = solve(kept);
-  refill(ops, 1e-3, g);
-  solve(kept);
-  log << "hierarchy of c = 1 for c = 1e-3: more than "
-      << LinearSolver::multigrid_reuse_factor << " times the iterations: "
-      << yes(worn.first > LinearSolver::multigrid_reuse_factor * first.first)
-      << ", solved: " << yes(worn.second)
-      << ", set up anew for the next solve: "
-      << yes(kept.n_factorizations() == 2) << '\n';
+  log << "hierarchy of c = 1 for c = 1e-3: given up after "
+      << LinearSolver::multigrid_reuse_factor
+      << " times the iterations and set up anew: "
+      << yes(kept.n_factorizations() == 2 &&
+             worn.first > LinearSolver::multigrid_reuse_factor * first.first)
+      << ", solved: " << yes(worn.second) << '\n';
 
   // a kept hierarchy under which CG hits the iteration limit is replaced:
   // set up for c = 1e-3 (solved loosely, to stay within the limit) and
@@ -214,5 +213,37 @@ main(int argc, char **argv)
          "one: "
       << yes(!failed && limited.n_factorizations() == 2 && solved)
       << ", iterations of both counted: " << yes(iterations > first.first + 2)
+      << '\n';
+
+  // the interface mode: a hierarchy is kept while the mode changes by at
+  // most interface_mode_tolerance, and set up anew beyond
+  LinearSolver moving(LinearSolverType::iterative, tolerance, 1000);
+  moving.set_persistent_matrices(true);
+  refill(ops, 1., g);
+  TVector mode(ops.lumped_mass);
+  mode                       = 0.5;
+  const auto solve_with_mode = [&]() {
+    moving.solve_product_form(k_hat,
+                              1.,
+                              ops.lumped_mass,
+                              g,
+                              ops.lumped_mass,
+                              ops.inverse_lumped_mass,
+                              x,
+                              b,
+                              &mode);
+    return relative_residual(ops, k_hat, x, b) < 2 * tolerance;
+  };
+  bool mode_solved = solve_with_mode();
+  mode.add(0.9 * LinearSolver::interface_mode_tolerance);
+  mode_solved                      = solve_with_mode() && mode_solved;
+  const bool kept_for_small_change = moving.n_factorizations() == 1;
+  mode(mode.locally_owned_elements().nth_index_in_set(0)) +=
+    0.2 * LinearSolver::interface_mode_tolerance;
+  mode.compress(VectorOperation::insert);
+  mode_solved = solve_with_mode() && mode_solved;
+  log << "interface mode changed by 0.9 x the tolerance: kept: "
+      << yes(kept_for_small_change) << "; at one node by 1.1 x: set up anew: "
+      << yes(moving.n_factorizations() == 2) << ", solved: " << yes(mode_solved)
       << '\n';
 }

@@ -189,12 +189,18 @@ namespace PhaseField
     const bool              kept_is_valid =
       schur_preconditioner && schur_preconditioner->size() == g.m();
     unsigned int failed_iterations = 0;
-    if (kept_is_valid && (constant_matrix || (persistent_matrices &&
-                                              !schur_preconditioner_worn())))
+    if (kept_is_valid &&
+        (constant_matrix ||
+         (persistent_matrices && !interface_moved(interface_mode))))
       {
         try
           {
-            return cg_solve_product_form(s, solution, rhs);
+            return cg_solve_product_form(s,
+                                         solution,
+                                         rhs,
+                                         constant_matrix ?
+                                           max_iterations :
+                                           kept_iteration_limit());
           }
         catch (const SolverControl::NoConvergence &failure)
           {
@@ -209,7 +215,9 @@ namespace PhaseField
     schur_preconditioner =
       std::make_unique<SchurPreconditioner>(g, mass, interface_mode);
     ++factorization_count;
-    cg_solve_product_form(s, solution, rhs);
+    if (interface_mode != nullptr)
+      setup_interface_mode = *interface_mode;
+    cg_solve_product_form(s, solution, rhs, max_iterations);
     fresh_solve = last_solve;
     last_iterations += failed_iterations;
     return last_iterations;
@@ -220,9 +228,10 @@ namespace PhaseField
   unsigned int
   LinearSolver::cg_solve_product_form(const ProductFormMatrix       &s,
                                       TrilinosWrappers::MPI::Vector &solution,
-                                      const TrilinosWrappers::MPI::Vector &rhs)
+                                      const TrilinosWrappers::MPI::Vector &rhs,
+                                      const unsigned int iteration_limit)
   {
-    SolverControl                           control(max_iterations,
+    SolverControl                           control(iteration_limit,
                           tolerance * rhs.l2_norm(),
                           false,
                           false);
@@ -236,15 +245,31 @@ namespace PhaseField
 
 
 
-  bool
-  LinearSolver::schur_preconditioner_worn() const
+  unsigned int
+  LinearSolver::kept_iteration_limit() const
   {
     // a tighter tolerance needs proportionally more iterations, a looser
     // one is not credited (the first iterations reduce the residual less
     // than later ones)
+    const double decades = -std::log10(tolerance);
     const double expected =
-      fresh_solve.iterations *
-      std::max(1., last_solve.decades / fresh_solve.decades);
-    return last_solve.iterations > multigrid_reuse_factor * expected;
+      fresh_solve.iterations * std::max(1., decades / fresh_solve.decades);
+    return std::min<unsigned int>(max_iterations,
+                                  std::max(1.,
+                                           multigrid_reuse_factor * expected));
+  }
+
+
+
+  bool
+  LinearSolver::interface_moved(
+    const TrilinosWrappers::MPI::Vector *interface_mode) const
+  {
+    if (interface_mode == nullptr ||
+        setup_interface_mode.size() != interface_mode->size())
+      return interface_mode != nullptr;
+    TrilinosWrappers::MPI::Vector change(*interface_mode);
+    change -= setup_interface_mode;
+    return change.linfty_norm() > interface_mode_tolerance;
   }
 } // namespace PhaseField
