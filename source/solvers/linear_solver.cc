@@ -57,6 +57,7 @@ namespace PhaseField
   {
     factorization.reset();
     schur_preconditioner.reset();
+    setup_interface_mode.clear();
     last_iterations = 0;
   }
 
@@ -217,6 +218,8 @@ namespace PhaseField
     ++factorization_count;
     if (interface_mode != nullptr)
       setup_interface_mode = *interface_mode;
+    else
+      setup_interface_mode.clear();
     cg_solve_product_form(s, solution, rhs, max_iterations);
     fresh_solve = last_solve;
     last_iterations += failed_iterations;
