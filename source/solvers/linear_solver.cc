@@ -221,7 +221,7 @@ namespace PhaseField
     else
       setup_interface_mode.clear();
     cg_solve_product_form(s, solution, rhs, max_iterations);
-    fresh_solve = last_solve;
+    fresh_solve = {last_iterations, -std::log10(tolerance)};
     last_iterations += failed_iterations;
     return last_iterations;
   }
@@ -242,7 +242,6 @@ namespace PhaseField
     solution = 0;
     cg.solve(s, solution, rhs, *schur_preconditioner);
     last_iterations = control.last_step();
-    last_solve      = {last_iterations, -std::log10(tolerance)};
     return last_iterations;
   }
 

@@ -320,11 +320,8 @@ namespace PhaseField
       unsigned int iterations = 0;
       double       decades    = 1;
     };
-    /**
-     * The first solve after the set-up of schur_preconditioner and the
-     * last solve.
-     */
-    SolveRecord fresh_solve, last_solve;
+    /** The first solve after the set-up of schur_preconditioner. */
+    SolveRecord fresh_solve;
     /** The interface mode of the set-up of schur_preconditioner. */
     dealii::TrilinosWrappers::MPI::Vector setup_interface_mode;
     bool                                  constant_matrix            = false;
