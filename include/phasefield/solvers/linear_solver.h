@@ -71,7 +71,7 @@ namespace PhaseField
      * |d/dd (1 - V^2)| <= 0.77/eps, so 0.2 allows the interface to move by
      * at least a quarter of eps. Without this test and the iteration cap
      * of multigrid_reuse_factor, the cube's first step at level 7, where
-     * the edges round off, took 1774 instead of 733 CG iterations (418 s
+     * the edges round off, took 1774 instead of 733 CG iterations (406 s
      * instead of 194 s); with both, 669 (172 s).
      */
     static constexpr double interface_mode_tolerance = 0.2;
