@@ -490,6 +490,26 @@ namespace PhaseField
                       "a hard nonlinear problem whatever its size (halving "
                       "Tau after a failure does not help); small first "
                       "steps smooth the data so that Newton converges.");
+    prm.declare_entry(
+      "Coarse start level",
+      "0",
+      Patterns::Integer(0),
+      "Nested iteration for the first step. 0: Newton's method of step 1 "
+      "starts from the initial data. A level l below Mesh / Finest level: "
+      "step 1 is first computed on the narrow-band meshes of levels l, "
+      "l+1, ..., Finest level - 1, each with Epsilon, Tau and Inner tau "
+      "evaluated at its own h, from the initial data at that resolution "
+      "and starting from the result of the level below with its profile "
+      "sharpened to the finer epsilon; Newton's method of step 1 on "
+      "Finest level then starts from the sharpened result of Finest "
+      "level - 1. The step solved is the same, only the start of its "
+      "iteration changes: it pays where step 1 is a long minimisation "
+      "(edge restoration, where the interface crosses the damage). Level "
+      "l must resolve what step 1 does (its epsilon well below the size "
+      "of the damage), or the coarse steps find another critical point. "
+      "l >= Finest level: no coarse start. Needs Mesh / Adaptive = true "
+      "and l >= Mesh / Coarsest level; not used on resume from a "
+      "checkpoint.");
   }
 
 
@@ -507,6 +527,8 @@ namespace PhaseField
     inner_tau_expression = prm.get("Inner tau");
     n_steps      = with_step_counts ? prm.get_integer("Number of steps") : 0;
     n_ramp_steps = with_step_counts ? prm.get_integer("Ramp-up steps") : 0;
+    coarse_start_level =
+      with_step_counts ? prm.get_integer("Coarse start level") : 0;
     prm.leave_subsection();
   }
 
@@ -775,6 +797,34 @@ namespace PhaseField
     augmented_lagrangian.parse_parameters(prm);
     if (!multilevel)
       set_finest_level(mesh.finest_level);
+    check_coarse_start_level();
+  }
+
+
+
+  void
+  WillmoreParameters::check_coarse_start_level() const
+  {
+    if (start_level() == mesh.finest_level)
+      return;
+    const std::string name = "<Time stepping / Coarse start level> = " +
+                             std::to_string(model.coarse_start_level);
+    if (!mesh.adaptive)
+      throw InputError(name + " needs <Mesh / Adaptive> = true: the coarse "
+                              "levels are narrow-band meshes.");
+    if (model.coarse_start_level < mesh.coarsest_level)
+      throw InputError(name + " is below <Mesh / Coarsest level> = " +
+                       std::to_string(mesh.coarsest_level) +
+                       "; 0 switches the coarse start off.");
+  }
+
+
+
+  unsigned int
+  WillmoreParameters::start_level() const
+  {
+    const unsigned int level = model.coarse_start_level;
+    return level == 0 || level >= mesh.finest_level ? mesh.finest_level : level;
   }
 
 
@@ -785,6 +835,16 @@ namespace PhaseField
     mesh.finest_level = level;
     model.evaluate(mesh.h());
     check_uniform_mesh_size();
+  }
+
+
+
+  WillmoreParameters
+  WillmoreParameters::for_finest_level(const unsigned int level) const
+  {
+    WillmoreParameters parameters = *this;
+    parameters.set_finest_level(level);
+    return parameters;
   }
 
 

@@ -389,6 +389,21 @@ namespace PhaseField
 
   template <int dim>
   void
+  Discretization<dim>::start_at_level(const unsigned int level)
+  {
+    AssertThrow(triangulation.n_levels() == 0,
+                ExcMessage("start_at_level() comes before create_mesh()."));
+    AssertThrow(level <= settings.mesh.finest_level &&
+                  level >= settings.mesh.coarsest_level,
+                ExcMessage("start_at_level() needs a level between the "
+                           "coarsest and the finest level."));
+    settings.mesh.finest_level = level;
+  }
+
+
+
+  template <int dim>
+  void
   Discretization<dim>::refine_to_level(const unsigned int level,
                                        BlockVector       &fields,
                                        const double       band_scale)

@@ -36,7 +36,6 @@ namespace PhaseField
     : PhaseFieldProblem<dim>(parameters.willmore,
                              contour_setup<dim>(parameters))
     , parameters(parameters)
-    , level_prm(parameters.willmore)
   {
     if (parameters.target.is_image())
       target_image = Images::read_gray_image(parameters.target.image_file,
@@ -52,8 +51,8 @@ namespace PhaseField
     create_output_directory(this->prm.output_directory, this->mpi_communicator);
     const bool         resume = this->prm.checkpoint.resume;
     const unsigned int first  = resume ? resumed_level_index() : 0;
-    level_prm                 = parameters.for_level(first);
-    this->create_scheme(level_prm);
+    this->level_prm           = parameters.for_level(first);
+    this->create_scheme(this->level_prm);
     this->print_header();
     this->pcout << "levels";
     for (const unsigned int level : parameters.multilevel.levels)
@@ -67,7 +66,7 @@ namespace PhaseField
         {
           TimerOutput::Scope t(this->computing_timer, "mesh: initial");
           this->discretization.create_mesh(this->setup.signed_distance.get(),
-                                           level_prm.model.epsilon);
+                                           this->level_prm.model.epsilon);
         }
         TimerOutput::Scope t(this->computing_timer, "initialisation");
         this->initialize_fields();
@@ -79,7 +78,7 @@ namespace PhaseField
         if (i > first)
           move_to_level(i);
         start_level(i);
-        TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(level_prm),
+        TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(this->level_prm),
                                 this->discretization,
                                 *this->scheme,
                                 *this,
@@ -135,7 +134,7 @@ namespace PhaseField
   ContourProblem<dim>::checkpoint_data() const
   {
     std::vector<double> data{double(level_index),
-                             double(level_prm.mesh.finest_level)};
+                             double(this->level_prm.mesh.finest_level)};
     data.insert(data.end(), criterion_history.begin(), criterion_history.end());
     return data;
   }
@@ -159,38 +158,23 @@ namespace PhaseField
   ContourProblem<dim>::start_level(const unsigned int index)
   {
     TimerOutput::Scope t(this->computing_timer, "labeling: target");
-    level_index = index;
-    level_prm   = parameters.for_level(index);
-    grid        = std::make_unique<HuffmanLabeling::LabelingGrid<dim>>(
-      level_prm.mesh.finest_level);
+    level_index     = index;
+    this->level_prm = parameters.for_level(index);
+    grid            = std::make_unique<HuffmanLabeling::LabelingGrid<dim>>(
+      this->level_prm.mesh.finest_level);
     target = target_on(*grid);
     criterion_history.clear();
-    this->pcout << "level " << level_prm.mesh.finest_level
-                << ": h = " << level_prm.mesh.h()
-                << ", epsilon = " << level_prm.model.epsilon
-                << ", tau = " << level_prm.model.tau
-                << ", inner tau = " << level_prm.model.inner_tau << ", "
-                << level_prm.model.n_steps << " steps"
+    this->pcout << "level " << this->level_prm.mesh.finest_level
+                << ": h = " << this->level_prm.mesh.h()
+                << ", epsilon = " << this->level_prm.model.epsilon
+                << ", tau = " << this->level_prm.model.tau
+                << ", inner tau = " << this->level_prm.model.inner_tau << ", "
+                << this->level_prm.model.n_steps << " steps"
                 << (parameters.multilevel.transition ==
                         LevelTransition::automatic ?
                       " at most" :
                       "")
                 << std::endl;
-  }
-
-
-
-  template <int dim>
-  void
-  ContourProblem<dim>::sharpen_profile(Vector &u, const double ratio)
-  {
-    // U = tanh(d/eps_old) gives d/eps_old = artanh(U); |U| = 1 (or beyond,
-    // from the interpolation) is clamped to keep artanh finite
-    const double largest = 1 - Constants::roundoff;
-    for (double &value : u)
-      value =
-        std::tanh(ratio * std::atanh(std::clamp(value, -largest, largest)));
-    u.compress(VectorOperation::insert);
   }
 
 
@@ -205,14 +189,14 @@ namespace PhaseField
       // U will be sharpened to the finer epsilon: |U_sharp| < tanh(b) iff
       // |U| < tanh(b eps_new / eps_old), so the band of the finer profile
       // is refined, not the wider one of the coarse epsilon
-      const double ratio = level_prm.model.epsilon / next.model.epsilon;
+      const double ratio = this->level_prm.model.epsilon / next.model.epsilon;
       this->discretization.refine_to_level(next.mesh.finest_level,
                                            this->solution,
                                            parameters.multilevel.sharpen ?
                                              1 / ratio :
                                              1);
       if (parameters.multilevel.sharpen)
-        sharpen_profile(this->solution.block(0), ratio);
+        this->sharpen_profile(this->solution.block(0), ratio);
       this->discretization.distribute_constraints(this->solution);
     }
     TimerOutput::Scope t(this->computing_timer, "initialisation");
@@ -238,8 +222,8 @@ namespace PhaseField
                                                 "Target / Image file");
     const std::unique_ptr<Function<dim>> distance =
       Shapes::create_signed_distance<dim>(parameters.target.shape);
-    const Shapes::PhaseFieldProfile<dim> phase_field(*distance,
-                                                     level_prm.model.epsilon);
+    const Shapes::PhaseFieldProfile<dim> phase_field(
+      *distance, this->level_prm.model.epsilon);
     return HuffmanLabeling::labeling_of_function(phase_field,
                                                  target_grid,
                                                  this->mpi_communicator);
@@ -329,7 +313,7 @@ namespace PhaseField
       gradient);
     // eps M (U - U^{k+1/3}) = -tau G with the lumped mass M
     gradient.scale(this->discretization.get_operators().inverse_lumped_mass);
-    state.block(0).add(-tau / level_prm.model.epsilon, gradient);
+    state.block(0).add(-tau / this->level_prm.model.epsilon, gradient);
     this->discretization.get_constraints().distribute(state.block(0));
   }
 
@@ -394,7 +378,7 @@ namespace PhaseField
                                     const Energies    &energies) const
   {
     const Mismatch m = mismatch(state);
-    return {double(level_prm.mesh.finest_level),
+    return {double(this->level_prm.mesh.finest_level),
             m.energy,
             m.labeling_error,
             total_energy(energies, m.energy)};

@@ -1,4 +1,8 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
+#include <phasefield/core/constants.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/phase_field_problem.h>
@@ -29,6 +33,7 @@ namespace PhaseField
     const WillmoreParameters &parameters,
     const Setup              &setup)
     : prm(parameters)
+    , level_prm(parameters)
     , setup(setup)
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -66,33 +71,115 @@ namespace PhaseField
   PhaseFieldProblem<dim>::run()
   {
     create_scheme(prm);
+    create_output_directory(prm.output_directory, mpi_communicator);
+    print_header();
+    BlockVector start;
+    if (!prm.checkpoint.resume)
+      {
+        const unsigned int first_level = prm.start_level();
+        if (first_level < prm.mesh.finest_level)
+          {
+            level_prm = prm.for_finest_level(first_level);
+            discretization.start_at_level(first_level);
+            create_scheme(level_prm);
+          }
+        {
+          TimerOutput::Scope t(computing_timer, "mesh: initial");
+          discretization.create_mesh(setup.signed_distance.get(),
+                                     level_prm.model.epsilon);
+        }
+        {
+          TimerOutput::Scope t(computing_timer, "initialisation");
+          initialize_fields();
+        }
+        if (first_level < prm.mesh.finest_level)
+          start = coarse_start_value();
+      }
+    // the scheme of the finest level exists only now
     TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(prm),
                             discretization,
                             *scheme,
                             *this,
                             pcout,
                             computing_timer);
-
-    create_output_directory(prm.output_directory, mpi_communicator);
-    print_header();
     if (prm.checkpoint.resume)
       time_loop.resume(solution);
     else
-      {
-        {
-          TimerOutput::Scope t(computing_timer, "mesh: initial");
-          discretization.create_mesh(setup.signed_distance.get(),
-                                     prm.model.epsilon);
-        }
-        {
-          TimerOutput::Scope t(computing_timer, "initialisation");
-          initialize_fields();
-        }
-        time_loop.run(solution);
-      }
+      time_loop.run(solution, start.n_blocks() > 0 ? &start : nullptr);
     computing_timer.print_summary();
     print_peak_memory(pcout, mpi_communicator);
     discretization.print_partition_balance(pcout);
+  }
+
+
+
+  template <int dim>
+  typename PhaseFieldProblem<dim>::BlockVector
+  PhaseFieldProblem<dim>::coarse_start_value()
+  {
+    BlockVector start = solution;
+    for (unsigned int level = level_prm.mesh.finest_level;
+         level < prm.mesh.finest_level;
+         ++level)
+      {
+        solve_coarse_step(start);
+        move_start_to_level(level + 1, start);
+      }
+    return start;
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::solve_coarse_step(BlockVector &start)
+  {
+    TimerOutput::Scope t(computing_timer, "start value: coarse steps");
+    Timer              timer;
+    const double       tau = level_prm.model.step_size(1);
+    pcout << "Start value of step 1 on level " << level_prm.mesh.finest_level
+          << " (h = " << level_prm.mesh.h()
+          << ", epsilon = " << level_prm.model.epsilon << ", tau = " << tau
+          << ", " << discretization.n_dofs() << " DoFs per field)" << std::endl;
+    scheme->prepare_step(start, level_prm.model.tau, tau);
+    const StepReport report = this->advance(*scheme, solution, start, tau);
+    pcout << "  level " << level_prm.mesh.finest_level << ": "
+          << report.newton_iterations << " Newton, " << report.linear_iterations
+          << " linear iterations, " << timer.wall_time() << " s";
+    if (report.converged)
+      pcout << std::endl;
+    else
+      {
+        pcout << ", not converged: the next level starts from its "
+                 "initial data"
+              << std::endl;
+        start = solution;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::move_start_to_level(const unsigned int level,
+                                              BlockVector       &start)
+  {
+    TimerOutput::Scope t(computing_timer, "start value: level transition");
+    const WillmoreParameters next = prm.for_finest_level(level);
+    const double ratio = level_prm.model.epsilon / next.model.epsilon;
+    // the band of the sharpened profile (see ContourProblem::move_to_level())
+    discretization.refine_to_level(level, start, 1 / ratio);
+    level_prm = next;
+    // the mesh of the step resolves the initial data too
+    discretization.reinit(solution, scheme->n_fields());
+    interpolate_initial_u(solution.block(0));
+    discretization.refine_to_band({&solution, &start});
+    sharpen_profile(start.block(0), ratio);
+    create_scheme(level_prm);
+    initialize_fields();
+    this->after_remesh(start);
+    discretization.distribute_constraints(start);
+    scheme->initialize(start, level_prm.model.tau);
   }
 
 
@@ -120,10 +207,34 @@ namespace PhaseField
   PhaseFieldProblem<dim>::initialize_fields()
   {
     discretization.reinit(solution, scheme->n_fields());
+    interpolate_initial_u(solution.block(0));
+    scheme->initialize(solution, level_prm.model.tau);
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::interpolate_initial_u(Vector &u) const
+  {
     const Shapes::PhaseFieldProfile<dim> u0(*setup.signed_distance,
-                                            prm.model.epsilon);
-    discretization.interpolate(u0, solution.block(0));
-    scheme->initialize(solution, prm.model.tau);
+                                            level_prm.model.epsilon);
+    discretization.interpolate(u0, u);
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::sharpen_profile(Vector &u, const double ratio)
+  {
+    // U = tanh(d/eps_old) gives d/eps_old = artanh(U); |U| = 1 (or beyond,
+    // from the interpolation) is clamped to keep artanh finite
+    const double largest = 1 - Constants::roundoff;
+    for (double &value : u)
+      value =
+        std::tanh(ratio * std::atanh(std::clamp(value, -largest, largest)));
+    u.compress(VectorOperation::insert);
   }
 
 

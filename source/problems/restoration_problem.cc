@@ -90,7 +90,7 @@ namespace PhaseField
     fixed_u_dofs.set_size(dof_handler.n_dofs());
     initial_u.reinit(operators.locally_owned_dofs, mpi_communicator);
     const Shapes::PhaseFieldProfile<2> u0(*setup.signed_distance,
-                                          prm.model.epsilon);
+                                          level_prm.model.epsilon);
     discretization.interpolate(u0, initial_u);
     discretization.get_constraints().distribute(initial_u);
     std::map<types::global_dof_index, Point<2>> support_points;

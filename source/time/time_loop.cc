@@ -115,7 +115,7 @@ namespace PhaseField
 
   template <int dim>
   void
-  TimeLoop<dim>::run(BlockVector &state)
+  TimeLoop<dim>::run(BlockVector &state, const BlockVector *first_start_value)
   {
     // checkpoints of an earlier run do not belong to this one
     Checkpoint::remove_all(settings.output_directory,
@@ -126,7 +126,7 @@ namespace PhaseField
                                        statistics_columns(),
                                        discretization.get_mpi_communicator());
     record(0, state, StepReport(), settings.model.tau);
-    run_steps(1, state);
+    run_steps(1, state, first_start_value);
   }
 
 
@@ -205,12 +205,16 @@ namespace PhaseField
 
   template <int dim>
   void
-  TimeLoop<dim>::run_steps(const unsigned int first_step, BlockVector &state)
+  TimeLoop<dim>::run_steps(const unsigned int first_step,
+                           BlockVector       &state,
+                           const BlockVector *first_start_value)
   {
     const unsigned int checkpoints = settings.checkpoint_interval;
     for (unsigned int step = first_step; step <= final_step; ++step)
       {
-        old_state                  = state;
+        old_state = state;
+        if (step == first_step && first_start_value != nullptr)
+          state = *first_start_value;
         const double     tried_tau = first_step_size(step);
         double           tau       = tried_tau;
         const StepReport report = advance_on_resolving_mesh(step, state, tau);

@@ -229,6 +229,14 @@ namespace PhaseField
      * tau, of sizes tau / 2^n_ramp_steps, ..., tau / 4, tau / 2.
      */
     unsigned int n_ramp_steps;
+    /**
+     * Nested iteration for the first step: Newton's method of step 1
+     * starts from that step computed on the narrow-band meshes of this
+     * level up to the finest level - 1
+     * (PhaseFieldProblem::coarse_start_value()); 0: from the initial data.
+     * See WillmoreParameters::start_level().
+     */
+    unsigned int coarse_start_level;
 
     /** Size of time step @p step (1-based), see n_ramp_steps. */
     double
@@ -246,8 +254,8 @@ namespace PhaseField
 
     /**
      * Without @p with_step_counts (shape from contour, whose multilevel
-     * schedule counts the steps) `Number of steps` and `Ramp-up steps` are
-     * not declared and are 0.
+     * schedule counts the steps) `Number of steps`, `Ramp-up steps` and
+     * `Coarse start level` are not declared and are 0.
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm,
@@ -260,7 +268,10 @@ namespace PhaseField
     evaluate(const double h);
 
   private:
-    /** `Number of steps` and `Ramp-up steps` in `Time stepping`. */
+    /**
+     * `Number of steps`, `Ramp-up steps` and `Coarse start level` in
+     * `Time stepping`.
+     */
     static void
     declare_step_counts(dealii::ParameterHandler &prm);
   };
@@ -410,6 +421,25 @@ namespace PhaseField
      */
     void
     check_uniform_mesh_size() const;
+
+    /**
+     * Throw an InputError if `Time stepping / Coarse start level` is below
+     * `Mesh / Coarsest level` (and not 0) or set for a uniform mesh.
+     */
+    void
+    check_coarse_start_level() const;
+
+    /**
+     * The finest level of the mesh step 1 starts on: `Time stepping /
+     * Coarse start level` if it is below the finest level (and not 0),
+     * else the finest level (no coarse start).
+     */
+    unsigned int
+    start_level() const;
+
+    /** These parameters with @p level as the finest level. */
+    WillmoreParameters
+    for_finest_level(const unsigned int level) const;
   };
 
   /**

@@ -116,6 +116,14 @@ namespace PhaseField
     refine_to_band(const std::vector<BlockVector *> &fields);
 
     /**
+     * Before create_mesh(): make @p level, at most the finest level of the
+     * settings, the finest level of the mesh to be created. refine_to_level()
+     * raises it later (a computation that starts on coarser meshes).
+     */
+    void
+    start_at_level(const unsigned int level);
+
+    /**
      * Make @p level (not below the current one) the finest level of the
      * narrow band and refine the band of the phase field in block 0 of
      * @p fields to it, transferring all blocks (constraints not yet

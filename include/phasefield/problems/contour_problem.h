@@ -172,14 +172,6 @@ namespace PhaseField
     void
     move_to_level(const unsigned int index);
 
-    /**
-     * U <- tanh(@p ratio artanh(U)) at every locally owned node: the
-     * profile tanh(d/eps_old) becomes tanh(d/eps_new) for
-     * @p ratio = eps_old/eps_new, with the zero level set unchanged.
-     */
-    static void
-    sharpen_profile(Vector &u, const double ratio);
-
     /** Step 2 of Algorithm 6.1 on U in @p state. */
     void
     mismatch_step(BlockVector &state, const double tau) const;
@@ -200,9 +192,7 @@ namespace PhaseField
     Vector
     ghosted_u(const BlockVector &state) const;
 
-    const ContourParameters &parameters;
-    /** The parameters of the current level. */
-    WillmoreParameters                                  level_prm;
+    const ContourParameters                            &parameters;
     unsigned int                                        level_index = 0;
     std::unique_ptr<HuffmanLabeling::LabelingGrid<dim>> grid;
     std::vector<double>                                 target;

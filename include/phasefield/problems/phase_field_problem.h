@@ -89,7 +89,41 @@ namespace PhaseField
     void
     print_header() const;
 
-    const WillmoreParameters  &prm;
+    /**
+     * Nested iteration for the first step (`Time stepping / Coarse start
+     * level`): from the mesh and initial fields of level_prm, the level
+     * WillmoreParameters::start_level(), compute step 1 there, carry its result
+     * to the next finer level (refine the narrow band of the result and of the
+     * initial data there, sharpen the profile to the finer epsilon, the fields
+     * of the scheme for it) and repeat up to Finest level - 1. Returns the
+     * start value of step 1 on Finest level; the mesh, the initial fields, the
+     * scheme and level_prm are then those of Finest level. The step on Finest
+     * level is the same step: only the start of its iteration changes, and a
+     * minimiser found on a coarser level is close to the fine one where the
+     * coarse epsilon is small against the distance the interface travels (the
+     * gap of a damaged edge).
+     */
+    BlockVector
+    coarse_start_value();
+
+    /** U = tanh(d/eps) at the nodes, with the epsilon of level_prm. */
+    void
+    interpolate_initial_u(Vector &u) const;
+
+    /**
+     * U <- tanh(@p ratio artanh(U)) at every locally owned node: the
+     * profile tanh(d/eps_old) becomes tanh(d/eps_new) for
+     * @p ratio = eps_old/eps_new, with the zero level set unchanged.
+     */
+    static void
+    sharpen_profile(Vector &u, const double ratio);
+
+    const WillmoreParameters &prm;
+    /**
+     * The parameters of the level the fields are on: prm, or a coarser
+     * level (coarse_start_value(), shape from contour's schedule).
+     */
+    WillmoreParameters         level_prm;
     const Setup                setup;
     const MPI_Comm             mpi_communicator;
     dealii::ConditionalOStream pcout;
@@ -98,6 +132,22 @@ namespace PhaseField
     BlockVector                solution;
 
     std::unique_ptr<TimeSteppingScheme<dim>> scheme;
+
+  private:
+    /**
+     * Step 1 on the level of level_prm from the initial fields into
+     * @p start (which holds the start value); if it does not converge,
+     * @p start becomes the initial fields.
+     */
+    void
+    solve_coarse_step(BlockVector &start);
+
+    /**
+     * Carry the coarse result @p start and the initial fields to the
+     * finer level @p level (coarse_start_value()).
+     */
+    void
+    move_start_to_level(const unsigned int level, BlockVector &start);
   };
 } // namespace PhaseField
 

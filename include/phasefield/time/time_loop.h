@@ -190,11 +190,14 @@ namespace PhaseField
 
     /**
      * Run all steps from the initialised @p state (time 0, step 0 is
-     * recorded first). Throws if a step fails after all halvings; the
-     * statistics and output up to the previous step are then complete.
+     * recorded first). The iteration of step 1 starts from
+     * @p first_start_value if given (on the mesh of @p state, initialised
+     * for step size `Tau`), otherwise from @p state. Throws if a step fails
+     * after all halvings; the statistics and output up to the previous
+     * step are then complete.
      */
     void
-    run(BlockVector &state);
+    run(BlockVector &state, const BlockVector *first_start_value = nullptr);
 
     /**
      * Instead of run(): load the newest checkpoint of the output directory
@@ -243,10 +246,13 @@ namespace PhaseField
 
     /**
      * Steps @p first_step, ..., n_steps from @p state, with re-meshing and
-     * checkpoints.
+     * checkpoints; the iteration of @p first_step starts from
+     * @p first_start_value if given.
      */
     void
-    run_steps(const unsigned int first_step, BlockVector &state);
+    run_steps(const unsigned int first_step,
+              BlockVector       &state,
+              const BlockVector *first_start_value = nullptr);
 
     /**
      * Load the newest checkpoint into @p state and restore time,
