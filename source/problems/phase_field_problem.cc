@@ -117,21 +117,31 @@ namespace PhaseField
   typename PhaseFieldProblem<dim>::BlockVector
   PhaseFieldProblem<dim>::coarse_start_value()
   {
-    BlockVector start = solution;
+    BlockVector start     = solution;
+    bool        converged = true;
     for (unsigned int level = level_prm.mesh.finest_level;
          level < prm.mesh.finest_level;
          ++level)
       {
-        solve_coarse_step(start);
+        // after a failure the levels are still passed through: the mesh
+        // of step 1 is refined from the coarse one
+        converged = converged && solve_coarse_step(start);
+        if (!converged)
+          start = solution;
         move_start_to_level(level + 1, start);
       }
-    return start;
+    if (converged)
+      return start;
+    pcout << "Step 1 starts from the initial data: a coarse step did not "
+             "converge"
+          << std::endl;
+    return BlockVector();
   }
 
 
 
   template <int dim>
-  void
+  bool
   PhaseFieldProblem<dim>::solve_coarse_step(BlockVector &start)
   {
     TimerOutput::Scope t(computing_timer, "start value: coarse steps");
@@ -145,16 +155,9 @@ namespace PhaseField
     const StepReport report = this->advance(*scheme, solution, start, tau);
     pcout << "  level " << level_prm.mesh.finest_level << ": "
           << report.newton_iterations << " Newton, " << report.linear_iterations
-          << " linear iterations, " << timer.wall_time() << " s";
-    if (report.converged)
-      pcout << std::endl;
-    else
-      {
-        pcout << ", not converged: the next level starts from its "
-                 "initial data"
-              << std::endl;
-        start = solution;
-      }
+          << " linear iterations, " << timer.wall_time() << " s"
+          << (report.converged ? "" : ", not converged") << std::endl;
+    return report.converged;
   }
 
 

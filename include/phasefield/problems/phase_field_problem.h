@@ -92,16 +92,18 @@ namespace PhaseField
     /**
      * Nested iteration for the first step (`Time stepping / Coarse start
      * level`): from the mesh and initial fields of level_prm, the level
-     * WillmoreParameters::start_level(), compute step 1 there, carry its result
-     * to the next finer level (refine the narrow band of the result and of the
-     * initial data there, sharpen the profile to the finer epsilon, the fields
-     * of the scheme for it) and repeat up to Finest level - 1. Returns the
-     * start value of step 1 on Finest level; the mesh, the initial fields, the
-     * scheme and level_prm are then those of Finest level. The step on Finest
-     * level is the same step: only the start of its iteration changes, and a
-     * minimiser found on a coarser level is close to the fine one where the
-     * coarse epsilon is small against the distance the interface travels (the
-     * gap of a damaged edge).
+     * WillmoreParameters::start_level(), compute step 1 there, carry its
+     * result to the next finer level (refine the narrow band of the result
+     * and of the initial data there, sharpen the profile to the finer
+     * epsilon, the fields of the scheme for it) and repeat up to Finest
+     * level - 1. Returns the start value of step 1 on Finest level, or an
+     * empty vector if a coarse step did not converge (step 1 then starts
+     * from the initial data). The mesh, the initial fields, the scheme and
+     * level_prm are then those of Finest level. The step on Finest level
+     * is the same step: only the start of its iteration changes. A
+     * minimiser found on a coarser level is close to the fine one where
+     * the coarse epsilon is small against the distance the interface
+     * travels (the gap of a damaged edge).
      */
     BlockVector
     coarse_start_value();
@@ -136,10 +138,10 @@ namespace PhaseField
   private:
     /**
      * Step 1 on the level of level_prm from the initial fields into
-     * @p start (which holds the start value); if it does not converge,
-     * @p start becomes the initial fields.
+     * @p start (which holds the start value). Returns whether it
+     * converged.
      */
-    void
+    bool
     solve_coarse_step(BlockVector &start);
 
     /**
