@@ -99,7 +99,7 @@ namespace
   /** ||S x - b|| / ||b|| for S = M + Khat M^-1 Khat. */
   double
   relative_residual(const Operators &ops,
-                    const Matrix    &k_hat,
+                    const StiffnessPlusDiagonal &k_hat,
                     const TVector   &x,
                     const TVector   &b)
   {
@@ -131,10 +131,10 @@ main(int argc, char **argv)
   Operators ops;
   assemble(dofs, ops);
 
-  Matrix k_hat, g;
-  k_hat.reinit(ops.laplace);
-  k_hat.copy_from(ops.laplace);
-  k_hat.add(1., ops.mass_matrix);
+  StiffnessPlusDiagonal k_hat;
+  TVector               lumped_mass(ops.lumped_mass);
+  k_hat.reinit(ops.laplace, 1., lumped_mass);
+  Matrix g;
   g.reinit(ops.laplace);
   TVector b(ops.lumped_mass), x(ops.lumped_mass);
   for (unsigned int i = 0; i < b.locally_owned_size(); ++i)

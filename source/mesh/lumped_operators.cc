@@ -169,6 +169,22 @@ namespace PhaseField
 
   template <int dim>
   void
+  LumpedOperators<dim>::stiffness_plus_weighted_mass(
+    const double                         stiffness_factor,
+    const TrilinosWrappers::MPI::Vector &nodal_weight,
+    StiffnessPlusDiagonal               &op) const
+  {
+    TrilinosWrappers::MPI::Vector diagonal(lumped_mass);
+    const unsigned int            n = nodal_weight.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      diagonal.begin()[i] *= nodal_weight.begin()[i];
+    op.reinit(stiffness, stiffness_factor, diagonal);
+  }
+
+
+
+  template <int dim>
+  void
   LumpedOperators<dim>::add_to_diagonal(
     const TrilinosWrappers::MPI::Vector &values,
     TrilinosWrappers::SparseMatrix      &matrix) const

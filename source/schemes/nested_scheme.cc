@@ -280,7 +280,7 @@ namespace PhaseField
                                   BlockVector       &y,
                                   const double       shift) const
   {
-    TrilinosWrappers::SparseMatrix k;
+    StiffnessPlusDiagonal k;
     build_k(z.block(Field::V), 0., k);
     apply_jacobian(k, z, x, y, shift);
   }
@@ -289,11 +289,11 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedStep<dim>::apply_jacobian(const TrilinosWrappers::SparseMatrix &k,
-                                  const BlockVector                    &z,
-                                  const BlockVector                    &x_in,
-                                  BlockVector                          &y,
-                                  const double shift) const
+  NestedStep<dim>::apply_jacobian(const StiffnessPlusDiagonal &k,
+                                  const BlockVector           &z,
+                                  const BlockVector           &x_in,
+                                  BlockVector                 &y,
+                                  const double                 shift) const
   {
     // with fixed U values, J has identity U-rows and U-columns there
     BlockVector x(x_in);
@@ -359,6 +359,17 @@ namespace PhaseField
 
 
   template <int dim>
+  void
+  NestedStep<dim>::build_k(const Vector          &v,
+                           const double           shift,
+                           StiffnessPlusDiagonal &k) const
+  {
+    ops.stiffness_plus_weighted_mass(weights.inner_tau, k_weights(v, shift), k);
+  }
+
+
+
+  template <int dim>
   unsigned int
   NestedStep<dim>::solve_jacobian(const BlockVector &z,
                                   const BlockVector &r,
@@ -371,7 +382,7 @@ namespace PhaseField
     ReducedMatrices &matrices = reduced_matrix_storage(local);
     // if the matrices do not depend on the state: build (and factorise)
     // them once
-    if (!constant_jacobian || matrices.k.m() == 0)
+    if (!constant_jacobian || matrices.k.empty())
       {
         build_reduced_matrices(z, matrices, solver.type());
         if (constant_jacobian && solver.type() == LinearSolverType::direct)

@@ -175,7 +175,7 @@ namespace PhaseField
 
   unsigned int
   LinearSolver::solve_product_form(
-    const TrilinosWrappers::SparseMatrix &k_hat,
+    const StiffnessPlusDiagonal          &k_hat,
     const double                          w,
     const TrilinosWrappers::MPI::Vector  &d,
     const TrilinosWrappers::SparseMatrix &g,

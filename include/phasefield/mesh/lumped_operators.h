@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <phasefield/core/parameters.h>
+#include <phasefield/mesh/stiffness_plus_diagonal.h>
 #include <vector>
 
 namespace PhaseField
@@ -78,6 +79,16 @@ namespace PhaseField
       const double                                 stiffness_factor,
       const dealii::TrilinosWrappers::MPI::Vector &nodal_weight,
       dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
+
+    /**
+     * The same operator as an @p op that applies L (which it references)
+     * instead of storing the matrix.
+     */
+    void
+    stiffness_plus_weighted_mass(
+      const double                                 stiffness_factor,
+      const dealii::TrilinosWrappers::MPI::Vector &nodal_weight,
+      StiffnessPlusDiagonal                       &op) const;
 
     /**
      * Add @p values (one per locally owned DoF) to the diagonal of

@@ -154,18 +154,20 @@ namespace PhaseField
     /**
      * The two matrices of the reduced Newton system at a state: K(V) and
      * the Schur complement S, assembled (direct solver) or in product
-     * form (iterative solver). For the biharmonic model (no double well)
+     * form (iterative solver). K(V) and Khat are kept as operators on the
+     * stiffness matrix (StiffnessPlusDiagonal), not as matrices: at the
+     * level-8 cube that saved MEMSAVE (doc/scaling.md). For the biharmonic model (no double well)
      * they are independent of the state.
      */
     struct ReducedMatrices
     {
-      dealii::TrilinosWrappers::SparseMatrix k;
+      StiffnessPlusDiagonal k;
       /** S assembled (only for the direct solver). */
       dealii::TrilinosWrappers::SparseMatrix s;
       /** L M^-1 L, from which S is assembled (direct solver). */
       std::unique_ptr<StiffnessSquare<dim>> stiffness_square;
       /** Product form of S (iterative solver): Khat, diag b M + E, G. */
-      dealii::TrilinosWrappers::SparseMatrix k_hat;
+      StiffnessPlusDiagonal                  k_hat;
       Vector                                 diagonal;
       dealii::TrilinosWrappers::SparseMatrix g;
       /** 1 - V^2, the near kernel of G (SchurPreconditioner). */
@@ -371,11 +373,20 @@ namespace PhaseField
     void
     zero_fixed_u(Vector &u_block) const;
 
-    /** K(V) - shift M = M[k_weight] + ttau L. */
+    /**
+     * K(V) - shift M = M[k_weight] + ttau L, as a matrix (for a solver
+     * that needs its entries) ...
+     */
     void
     build_k(const Vector                           &v,
             const double                            shift,
             dealii::TrilinosWrappers::SparseMatrix &k) const;
+
+    /** ... or as an operator that applies L (one vector of storage). */
+    void
+    build_k(const Vector          &v,
+            const double           shift,
+            StiffnessPlusDiagonal &k) const;
 
     /**
      * The factor G of the product-form preconditioner of
@@ -496,11 +507,11 @@ namespace PhaseField
 
     /** y = J(Z) x as jacobian_vmult(), with K(V) given as @p k. */
     void
-    apply_jacobian(const dealii::TrilinosWrappers::SparseMatrix &k,
-                   const BlockVector                            &z,
-                   const BlockVector                            &x,
-                   BlockVector                                  &y,
-                   const double                                  shift) const;
+    apply_jacobian(const StiffnessPlusDiagonal &k,
+                   const BlockVector           &z,
+                   const BlockVector           &x,
+                   BlockVector                 &y,
+                   const double                 shift) const;
 
     /** Is the U value at locally owned index @p i held fixed? */
     bool

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <memory>
 #include <phasefield/core/parameters.h>
+#include <phasefield/mesh/stiffness_plus_diagonal.h>
 #include <phasefield/solvers/direct_factorization.h>
 
 namespace PhaseField
@@ -132,7 +133,7 @@ namespace PhaseField
      */
     unsigned int
     solve_product_form(
-      const dealii::TrilinosWrappers::SparseMatrix &k_hat,
+      const StiffnessPlusDiagonal                  &k_hat,
       const double                                  w,
       const dealii::TrilinosWrappers::MPI::Vector  &d,
       const dealii::TrilinosWrappers::SparseMatrix &g,

@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/mesh/stiffness_plus_diagonal.h>
 
 /**
  * The pieces of the iterative solver of Schur complements in product form,
@@ -68,9 +69,9 @@ namespace PhaseField
   class ProductFormMatrix
   {
   public:
-    ProductFormMatrix(const dealii::TrilinosWrappers::SparseMatrix &k_hat,
-                      const double                                  w,
-                      const dealii::TrilinosWrappers::MPI::Vector  &d,
+    ProductFormMatrix(const StiffnessPlusDiagonal                 &k_hat,
+                      const double                                 w,
+                      const dealii::TrilinosWrappers::MPI::Vector &d,
                       const dealii::TrilinosWrappers::MPI::Vector &inverse_mass)
       : k_hat(k_hat)
       , w(w)
@@ -91,7 +92,7 @@ namespace PhaseField
     }
 
   private:
-    const dealii::TrilinosWrappers::SparseMatrix &k_hat;
+    const StiffnessPlusDiagonal                  &k_hat;
     const double                                  w;
     const dealii::TrilinosWrappers::MPI::Vector  &d;
     const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass;
