@@ -7,7 +7,8 @@
 // which CG does not converge within the iteration limit is replaced and
 // the solve repeated, its iterations counted.
 //
-// S = M + Khat M^-1 Khat with Khat = L + M (Q1, unit square, lumped M), and
+// S = M + Khat M^-1 Khat with Khat = L + M (Q1, unit square, lumped M, both
+// as StiffnessPlusDiagonal), and
 // G = M + c L for several c: c = 1 is the preconditioner the theory of
 // SchurPreconditioner is for; c = 1e-3 a poor one.
 
@@ -30,10 +31,10 @@ using Matrix  = TrilinosWrappers::SparseMatrix;
 
 namespace
 {
-  /** Q1 Laplace and consistent mass matrices of one pattern, lumped mass. */
+  /** Q1 Laplace matrix and lumped mass. */
   struct Operators
   {
-    Matrix  laplace, mass_matrix;
+    Matrix  laplace;
     TVector lumped_mass, inverse_lumped_mass;
   };
 
@@ -45,7 +46,6 @@ namespace
     DoFTools::make_sparsity_pattern(dofs, pattern);
     pattern.compress();
     ops.laplace.reinit(pattern);
-    ops.mass_matrix.reinit(pattern);
     ops.lumped_mass.reinit(owned, MPI_COMM_WORLD);
 
     const QGauss<2>                      quadrature(2);
@@ -74,13 +74,11 @@ namespace
                 }
           cell->get_dof_indices(indices);
           ops.laplace.add(indices, cell_laplace);
-          ops.mass_matrix.add(indices, cell_mass);
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
               ops.lumped_mass(indices[i]) += cell_mass(i, j);
         }
     ops.laplace.compress(VectorOperation::add);
-    ops.mass_matrix.compress(VectorOperation::add);
     ops.lumped_mass.compress(VectorOperation::add);
     ops.inverse_lumped_mass = ops.lumped_mass;
     for (auto &value : ops.inverse_lumped_mass)
@@ -89,11 +87,10 @@ namespace
 
   /** Refill @p g in place with M + c L. */
   void
-  refill(const Operators &ops, const double c, Matrix &g)
+  refill(const Operators &ops, const double c, StiffnessPlusDiagonal &g)
   {
-    g = 0;
-    g.add(1., ops.mass_matrix);
-    g.add(c, ops.laplace);
+    TVector mass(ops.lumped_mass);
+    g.reinit(ops.laplace, c, mass);
   }
 
   /** ||S x - b|| / ||b|| for S = M + Khat M^-1 Khat. */
@@ -134,8 +131,7 @@ main(int argc, char **argv)
   StiffnessPlusDiagonal k_hat;
   TVector               lumped_mass(ops.lumped_mass);
   k_hat.reinit(ops.laplace, 1., lumped_mass);
-  Matrix g;
-  g.reinit(ops.laplace);
+  StiffnessPlusDiagonal g;
   TVector b(ops.lumped_mass), x(ops.lumped_mass);
   for (unsigned int i = 0; i < b.locally_owned_size(); ++i)
     b.begin()[i] =

@@ -446,7 +446,7 @@ namespace PhaseField
                                       const double                    b,
                                       const double                    w,
                                       const double                    m,
-                                      TrilinosWrappers::SparseMatrix &g,
+                                      StiffnessPlusDiagonal          &g,
                                       Vector &interface_mode) const
   {
     const double scale  = std::sqrt(w / m);
@@ -826,12 +826,12 @@ namespace PhaseField
   {
     // V: Newton on R_P(U, V) = 0 with full steps (a convex problem), to
     // the absolute tolerance or until the residual stagnates at round-off
-    // (about 1e-15 in this norm)
+    // (about 1e-15 in this norm); inexact, as the outer Newton method:
+    // each linear solve only as tight as the next Newton residual needs
     NewtonControl control;
     control.absolute_tolerance     = tolerance;
     control.max_iterations         = 50;
     control.line_search            = false;
-    control.adapt_linear_tolerance = false;
     control.roundoff_level         = 1e-12;
     const MPI_Comm comm            = discretization.get_mpi_communicator();
     BlockVector    v(std::vector<IndexSet>(1, ops.locally_owned_dofs), comm);
@@ -857,6 +857,8 @@ namespace PhaseField
     for (unsigned int i = 0; i < n; ++i)
       r.begin()[i] = -weights.a * m[i] * (w.begin()[i] - u.begin()[i]);
     ops.zero_constrained(r);
+    // P at the solver's own tolerance, not the last one of the Newton solve
+    solver.set_tolerance(0);
     solver.solve(k, p, r);
     ops.zero_constrained(p);
     return report.newton_iterations;

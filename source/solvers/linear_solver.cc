@@ -86,7 +86,7 @@ namespace PhaseField
         return last_iterations;
       }
     TrilinosWrappers::PreconditionAMG amg;
-    initialize_multigrid(amg, matrix);
+    initialize_multigrid(amg, matrix.trilinos_matrix());
     if (symmetric)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
@@ -178,7 +178,7 @@ namespace PhaseField
     const StiffnessPlusDiagonal          &k_hat,
     const double                          w,
     const TrilinosWrappers::MPI::Vector  &d,
-    const TrilinosWrappers::SparseMatrix &g,
+    const StiffnessPlusDiagonal          &g,
     const TrilinosWrappers::MPI::Vector  &mass,
     const TrilinosWrappers::MPI::Vector  &inverse_mass,
     TrilinosWrappers::MPI::Vector        &solution,

@@ -19,12 +19,10 @@ namespace PhaseField
      * minutes. Throw instead, on all ranks (Epetra's minimum is global).
      */
     void
-    assert_positive_diagonal(
-      const dealii::TrilinosWrappers::SparseMatrix &matrix)
+    assert_positive_diagonal(const Epetra_RowMatrix &matrix)
     {
-      const Epetra_CrsMatrix &epetra_matrix = matrix.trilinos_matrix();
-      Epetra_Vector           diagonal(epetra_matrix.RowMap());
-      epetra_matrix.ExtractDiagonalCopy(diagonal);
+      Epetra_Vector diagonal(matrix.RowMatrixRowMap());
+      matrix.ExtractDiagonalCopy(diagonal);
       double minimum = 0.;
       diagonal.MinValue(&minimum);
       AssertThrow(minimum > 0.,
@@ -41,9 +39,9 @@ namespace PhaseField
 
   void
   initialize_multigrid(
-    dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
-    const dealii::TrilinosWrappers::SparseMatrix &matrix,
-    const dealii::TrilinosWrappers::MPI::Vector  *interface_mode)
+    dealii::TrilinosWrappers::PreconditionAMG   &multigrid,
+    const Epetra_RowMatrix                      &matrix,
+    const dealii::TrilinosWrappers::MPI::Vector *interface_mode)
   {
     assert_positive_diagonal(matrix);
     dealii::TrilinosWrappers::PreconditionAMG::AdditionalData settings;

@@ -190,7 +190,7 @@ namespace PhaseField
      * The product form of S_V (no Schur solver): G, its multigrid, 1 - V^2
      * and gamma^2/m.
      */
-    dealii::TrilinosWrappers::SparseMatrix schur_factor;
+    StiffnessPlusDiagonal                  schur_factor;
     std::unique_ptr<SchurPreconditioner>   schur_multigrid;
     Vector                                 interface_mode;
     double                                 schur_inverse_scale = 0;

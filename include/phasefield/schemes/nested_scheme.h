@@ -154,9 +154,8 @@ namespace PhaseField
     /**
      * The two matrices of the reduced Newton system at a state: K(V) and
      * the Schur complement S, assembled (direct solver) or in product
-     * form (iterative solver). K(V) and Khat are kept as operators on the
-     * stiffness matrix (StiffnessPlusDiagonal), not as matrices: at the
-     * level-8 cube that saved MEMSAVE (doc/scaling.md). For the biharmonic model (no double well)
+     * form (iterative solver). K(V), Khat and G are kept as operators on
+     * the stiffness matrix (StiffnessPlusDiagonal), not as matrices. For the biharmonic model (no double well)
      * they are independent of the state.
      */
     struct ReducedMatrices
@@ -169,7 +168,7 @@ namespace PhaseField
       /** Product form of S (iterative solver): Khat, diag b M + E, G. */
       StiffnessPlusDiagonal                  k_hat;
       Vector                                 diagonal;
-      dealii::TrilinosWrappers::SparseMatrix g;
+      StiffnessPlusDiagonal                  g;
       /** 1 - V^2, the near kernel of G (SchurPreconditioner). */
       Vector interface_mode;
       /**
@@ -402,7 +401,7 @@ namespace PhaseField
                        const double                            b,
                        const double                            w,
                        const double                            m,
-                       dealii::TrilinosWrappers::SparseMatrix &g,
+                       StiffnessPlusDiagonal                  &g,
                        Vector &interface_mode) const;
 
     /**

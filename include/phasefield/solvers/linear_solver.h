@@ -136,7 +136,7 @@ namespace PhaseField
       const StiffnessPlusDiagonal                  &k_hat,
       const double                                  w,
       const dealii::TrilinosWrappers::MPI::Vector  &d,
-      const dealii::TrilinosWrappers::SparseMatrix &g,
+      const StiffnessPlusDiagonal                  &g,
       const dealii::TrilinosWrappers::MPI::Vector  &mass,
       const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass,
       dealii::TrilinosWrappers::MPI::Vector        &solution,

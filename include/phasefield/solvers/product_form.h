@@ -40,9 +40,9 @@ namespace PhaseField
    */
   void
   initialize_multigrid(
-    dealii::TrilinosWrappers::PreconditionAMG    &multigrid,
-    const dealii::TrilinosWrappers::SparseMatrix &matrix,
-    const dealii::TrilinosWrappers::MPI::Vector  *interface_mode = nullptr);
+    dealii::TrilinosWrappers::PreconditionAMG   &multigrid,
+    const Epetra_RowMatrix                      &matrix,
+    const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr);
 
 
 
@@ -122,9 +122,9 @@ namespace PhaseField
   {
   public:
     SchurPreconditioner(
-      const dealii::TrilinosWrappers::SparseMatrix &g,
-      const dealii::TrilinosWrappers::MPI::Vector  &mass,
-      const dealii::TrilinosWrappers::MPI::Vector  *interface_mode = nullptr)
+      const StiffnessPlusDiagonal                 &g,
+      const dealii::TrilinosWrappers::MPI::Vector &mass,
+      const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr)
       : mass(mass)
       , tmp(mass)
     {
