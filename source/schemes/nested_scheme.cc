@@ -56,11 +56,10 @@ namespace PhaseField
                    BlockVector       &dz,
                    LinearSolver      &solver) override
     {
-      TrilinosWrappers::SparseMatrix k;
-      step.build_k(z.block(0), 0., k);
       Vector rhs(r.block(0));
       rhs *= -1;
-      const unsigned int iterations = solver.solve(k, dz.block(0), rhs);
+      const unsigned int iterations =
+        step.solve_with_k(z.block(0), solver, dz.block(0), rhs);
       step.ops.zero_constrained(dz.block(0));
       return iterations;
     }
@@ -365,6 +364,24 @@ namespace PhaseField
                            StiffnessPlusDiagonal &k) const
   {
     ops.stiffness_plus_weighted_mass(weights.inner_tau, k_weights(v, shift), k);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NestedStep<dim>::solve_with_k(const Vector &v,
+                                LinearSolver &solver,
+                                Vector       &x,
+                                const Vector &rhs) const
+  {
+    const auto solve = [&](auto &&k) {
+      build_k(v, 0., k);
+      return solver.solve(k, x, rhs);
+    };
+    return solver.type() == LinearSolverType::iterative ?
+             solve(StiffnessPlusDiagonal()) :
+             solve(TrilinosWrappers::SparseMatrix());
   }
 
 
@@ -852,14 +869,12 @@ namespace PhaseField
     const double                  *m = ops.lumped_mass.begin();
     const unsigned int             n = u.locally_owned_size();
     Vector                         r(u);
-    TrilinosWrappers::SparseMatrix k;
-    build_k(w, 0., k);
     for (unsigned int i = 0; i < n; ++i)
       r.begin()[i] = -weights.a * m[i] * (w.begin()[i] - u.begin()[i]);
     ops.zero_constrained(r);
     // P at the solver's own tolerance, not the last one of the Newton solve
     solver.set_tolerance(0);
-    solver.solve(k, p, r);
+    solve_with_k(w, solver, p, r);
     ops.zero_constrained(p);
     return report.newton_iterations;
   }

@@ -68,10 +68,6 @@ namespace PhaseField
                       TrilinosWrappers::MPI::Vector        &solution,
                       const TrilinosWrappers::MPI::Vector  &rhs)
   {
-    SolverControl control(max_iterations,
-                          tolerance * rhs.l2_norm(),
-                          false,
-                          false);
     solution = 0;
     if (solver_type == LinearSolverType::direct && constant_matrix &&
         factorization && factorization->size() == matrix.m())
@@ -85,15 +81,45 @@ namespace PhaseField
         last_iterations = solve_direct(matrix, solution, rhs);
         return last_iterations;
       }
+    return solve_with_multigrid(matrix, matrix.trilinos_matrix(), solution, rhs);
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve(const StiffnessPlusDiagonal         &op,
+                      TrilinosWrappers::MPI::Vector       &solution,
+                      const TrilinosWrappers::MPI::Vector &rhs)
+  {
+    AssertThrow(solver_type == LinearSolverType::iterative,
+                ExcMessage("A direct solver needs the matrix, not an "
+                           "operator."));
+    return solve_with_multigrid(op, op, solution, rhs);
+  }
+
+
+
+  template <typename Operator>
+  unsigned int
+  LinearSolver::solve_with_multigrid(const Operator                      &op,
+                                     const Epetra_RowMatrix              &rows,
+                                     TrilinosWrappers::MPI::Vector       &solution,
+                                     const TrilinosWrappers::MPI::Vector &rhs)
+  {
+    SolverControl control(max_iterations,
+                          tolerance * rhs.l2_norm(),
+                          false,
+                          false);
+    solution = 0;
     TrilinosWrappers::PreconditionAMG amg;
-    initialize_multigrid(amg, matrix.trilinos_matrix());
+    initialize_multigrid(amg, rows);
     if (symmetric)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.solve(matrix, solution, rhs, amg);
+        cg.solve(op, solution, rhs, amg);
       }
     else
-      gmres_solve(matrix, solution, rhs, amg, control);
+      gmres_solve(op, solution, rhs, amg, control);
     last_iterations = control.last_step();
     return last_iterations;
   }
@@ -158,11 +184,11 @@ namespace PhaseField
 
 
 
-  template <typename Preconditioner>
+  template <typename Operator, typename Preconditioner>
   void
-  LinearSolver::gmres_solve(const TrilinosWrappers::SparseMatrix &matrix,
-                            TrilinosWrappers::MPI::Vector        &solution,
-                            const TrilinosWrappers::MPI::Vector  &rhs,
+  LinearSolver::gmres_solve(const Operator                      &op,
+                            TrilinosWrappers::MPI::Vector       &solution,
+                            const TrilinosWrappers::MPI::Vector &rhs,
                             const Preconditioner &preconditioner,
                             SolverControl        &control) const
   {
@@ -170,7 +196,7 @@ namespace PhaseField
       control,
       SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
         gmres_restart, /*right_preconditioning=*/true));
-    gmres.solve(matrix, solution, rhs, preconditioner);
+    gmres.solve(op, solution, rhs, preconditioner);
   }
 
   unsigned int

@@ -388,6 +388,17 @@ namespace PhaseField
             StiffnessPlusDiagonal &k) const;
 
     /**
+     * Solve K(V) @p x = @p rhs with @p solver: K as an operator for the
+     * iterative type, as a matrix for the direct one. Returns the
+     * iterations.
+     */
+    unsigned int
+    solve_with_k(const Vector &v,
+                 LinearSolver &solver,
+                 Vector       &x,
+                 const Vector &rhs) const;
+
+    /**
      * The factor G of the product-form preconditioner of
      * S = w Khat M^-1 Khat + m M (+ a diagonal), Khat = K(V) - b M:
      * G = gamma M + sqrt(w/m) Khat with gamma = schur_mass_shift, so that

@@ -115,6 +115,15 @@ namespace PhaseField
           const dealii::TrilinosWrappers::MPI::Vector  &rhs);
 
     /**
+     * Solve with an operator that is not stored as a matrix (iterative
+     * type only): Krylov iterations with an AMG set up from its rows.
+     */
+    unsigned int
+    solve(const StiffnessPlusDiagonal                 &op,
+          dealii::TrilinosWrappers::MPI::Vector       &solution,
+          const dealii::TrilinosWrappers::MPI::Vector &rhs);
+
+    /**
      * Solve S x = r for S = diag(d) + w Khat M^-1 Khat given in product
      * form (never assembled: two sparse matrix-vector products with the
      * second-order matrix Khat per application), with CG preconditioned by
@@ -287,14 +296,25 @@ namespace PhaseField
     void
     factorize_for_solve(const dealii::TrilinosWrappers::SparseMatrix &matrix);
 
+    /**
+     * CG (GMRES if not symmetric) for @p op, preconditioned with one AMG
+     * cycle set up from @p rows, the same operator as Epetra_RowMatrix.
+     */
+    template <typename Operator>
+    unsigned int
+    solve_with_multigrid(const Operator                              &op,
+                         const Epetra_RowMatrix                      &rows,
+                         dealii::TrilinosWrappers::MPI::Vector       &solution,
+                         const dealii::TrilinosWrappers::MPI::Vector &rhs);
+
     /** Right-preconditioned GMRES. */
-    template <typename Preconditioner>
+    template <typename Operator, typename Preconditioner>
     void
-    gmres_solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
-                dealii::TrilinosWrappers::MPI::Vector        &solution,
-                const dealii::TrilinosWrappers::MPI::Vector  &rhs,
-                const Preconditioner                         &preconditioner,
-                dealii::SolverControl                        &control) const;
+    gmres_solve(const Operator                              &op,
+                dealii::TrilinosWrappers::MPI::Vector       &solution,
+                const dealii::TrilinosWrappers::MPI::Vector &rhs,
+                const Preconditioner                        &preconditioner,
+                dealii::SolverControl                       &control) const;
 
     const LinearSolverType solver_type;
     const double           relative_tolerance;
