@@ -95,10 +95,10 @@ namespace
 
   /** ||S x - b|| / ||b|| for S = M + Khat M^-1 Khat. */
   double
-  relative_residual(const Operators &ops,
+  relative_residual(const Operators             &ops,
                     const StiffnessPlusDiagonal &k_hat,
-                    const TVector   &x,
-                    const TVector   &b)
+                    const TVector               &x,
+                    const TVector               &b)
   {
     TVector tmp(b), sx(b);
     k_hat.vmult(tmp, x);
@@ -132,7 +132,7 @@ main(int argc, char **argv)
   TVector               lumped_mass(ops.lumped_mass);
   k_hat.reinit(ops.laplace, 1., lumped_mass);
   StiffnessPlusDiagonal g;
-  TVector b(ops.lumped_mass), x(ops.lumped_mass);
+  TVector               b(ops.lumped_mass), x(ops.lumped_mass);
   for (unsigned int i = 0; i < b.locally_owned_size(); ++i)
     b.begin()[i] =
       std::sin(7. * b.locally_owned_elements().nth_index_in_set(i));

@@ -47,8 +47,8 @@ namespace
         if (na != nb)
           return 1;
         for (int k = 0; k < na; ++k)
-          local = std::max(local,
-                           ia[k] == ib[k] ? std::abs(va[k] - vb[k]) : 1.);
+          local =
+            std::max(local, ia[k] == ib[k] ? std::abs(va[k] - vb[k]) : 1.);
       }
     double global = 0;
     a.Comm().MaxAll(&local, &global, 1);
@@ -57,9 +57,9 @@ namespace
 
   /** CG iterations for @p matrix x = @p b to 1e-8 with @p amg. */
   unsigned int
-  cg_iterations(const TrilinosWrappers::SparseMatrix      &matrix,
+  cg_iterations(const TrilinosWrappers::SparseMatrix    &matrix,
                 const TrilinosWrappers::PreconditionAMG &amg,
-                const TVector                             &b)
+                const TVector                           &b)
   {
     SolverControl     control(200, 1e-8 * b.l2_norm());
     SolverCG<TVector> cg(control);
@@ -123,19 +123,16 @@ check()
   double product_difference = 0, product_norm = 0;
   y_op.Norm2(&product_difference);
   y_matrix.Norm2(&product_norm);
-  Testing::log() << "    entries: "
-                 << yes(row_difference(op, epetra_matrix) < roundoff * scale)
-                 << ", diagonal: "
-                 << yes(diagonal_difference < roundoff * scale)
-                 << ", Multiply: "
-                 << yes(product_difference < roundoff * product_norm)
-                 << ", NormInf: "
-                 << yes(std::abs(op.NormInf() - scale) < roundoff * scale)
-                 << ", size: "
-                 << yes(op.m() == matrix.m() &&
-                        op.NumGlobalRows64() ==
-                          static_cast<long long>(matrix.m()))
-                 << '\n';
+  Testing::log()
+    << "    entries: "
+    << yes(row_difference(op, epetra_matrix) < roundoff * scale)
+    << ", diagonal: " << yes(diagonal_difference < roundoff * scale)
+    << ", Multiply: " << yes(product_difference < roundoff * product_norm)
+    << ", NormInf: " << yes(std::abs(op.NormInf() - scale) < roundoff * scale)
+    << ", size: "
+    << yes(op.m() == matrix.m() &&
+           op.NumGlobalRows64() == static_cast<long long>(matrix.m()))
+    << '\n';
 
   // ML set up from the operator and from the matrix
   TrilinosWrappers::PreconditionAMG amg_op, amg_matrix;

@@ -93,8 +93,7 @@ namespace PhaseField
       l().ExtractMyRowCopy(my_row, length, n_entries, values, indices);
     if (error != 0)
       return error;
-    const int diagonal_column =
-      l().ColMap().LID(l().RowMap().GID64(my_row));
+    const int diagonal_column = l().ColMap().LID(l().RowMap().GID64(my_row));
     for (int k = 0; k < n_entries; ++k)
       {
         values[k] *= stiffness_factor;
@@ -195,8 +194,7 @@ namespace PhaseField
     for (int row = 0; row < NumMyRows(); ++row)
       {
         int n = 0;
-        ExtractMyRowCopy(
-          row, values.size(), n, values.data(), indices.data());
+        ExtractMyRowCopy(row, values.size(), n, values.data(), indices.data());
         double sum = 0;
         for (int k = 0; k < n; ++k)
           sum += std::abs(values[k]);

@@ -459,11 +459,11 @@ namespace PhaseField
 
   template <int dim>
   void
-  NestedStep<dim>::build_schur_factor(const Vector                   &v,
-                                      const double                    b,
-                                      const double                    w,
-                                      const double                    m,
-                                      StiffnessPlusDiagonal          &g,
+  NestedStep<dim>::build_schur_factor(const Vector          &v,
+                                      const double           b,
+                                      const double           w,
+                                      const double           m,
+                                      StiffnessPlusDiagonal &g,
                                       Vector &interface_mode) const
   {
     const double scale  = std::sqrt(w / m);
@@ -846,11 +846,11 @@ namespace PhaseField
     // (about 1e-15 in this norm); inexact, as the outer Newton method:
     // each linear solve only as tight as the next Newton residual needs
     NewtonControl control;
-    control.absolute_tolerance     = tolerance;
-    control.max_iterations         = 50;
-    control.line_search            = false;
-    control.roundoff_level         = 1e-12;
-    const MPI_Comm comm            = discretization.get_mpi_communicator();
+    control.absolute_tolerance = tolerance;
+    control.max_iterations     = 50;
+    control.line_search        = false;
+    control.roundoff_level     = 1e-12;
+    const MPI_Comm comm        = discretization.get_mpi_communicator();
     BlockVector    v(std::vector<IndexSet>(1, ops.locally_owned_dofs), comm);
     v.block(0) = z.block(Field::V);
     InnerProblem     inner(*this, z.block(Field::U));
@@ -863,12 +863,12 @@ namespace PhaseField
     z.block(Field::V) = v.block(0);
 
     // P: K(V) P = -a M (V - U)
-    const Vector                  &u = z.block(Field::U);
-    const Vector                  &w = z.block(Field::V);
-    Vector                        &p = z.block(Field::P);
-    const double                  *m = ops.lumped_mass.begin();
-    const unsigned int             n = u.locally_owned_size();
-    Vector                         r(u);
+    const Vector      &u = z.block(Field::U);
+    const Vector      &w = z.block(Field::V);
+    Vector            &p = z.block(Field::P);
+    const double      *m = ops.lumped_mass.begin();
+    const unsigned int n = u.locally_owned_size();
+    Vector             r(u);
     for (unsigned int i = 0; i < n; ++i)
       r.begin()[i] = -weights.a * m[i] * (w.begin()[i] - u.begin()[i]);
     ops.zero_constrained(r);

@@ -81,7 +81,10 @@ namespace PhaseField
         last_iterations = solve_direct(matrix, solution, rhs);
         return last_iterations;
       }
-    return solve_with_multigrid(matrix, matrix.trilinos_matrix(), solution, rhs);
+    return solve_with_multigrid(matrix,
+                                matrix.trilinos_matrix(),
+                                solution,
+                                rhs);
   }
 
 
@@ -101,9 +104,9 @@ namespace PhaseField
 
   template <typename Operator>
   unsigned int
-  LinearSolver::solve_with_multigrid(const Operator                      &op,
-                                     const Epetra_RowMatrix              &rows,
-                                     TrilinosWrappers::MPI::Vector       &solution,
+  LinearSolver::solve_with_multigrid(const Operator                &op,
+                                     const Epetra_RowMatrix        &rows,
+                                     TrilinosWrappers::MPI::Vector &solution,
                                      const TrilinosWrappers::MPI::Vector &rhs)
   {
     SolverControl control(max_iterations,
@@ -189,8 +192,8 @@ namespace PhaseField
   LinearSolver::gmres_solve(const Operator                      &op,
                             TrilinosWrappers::MPI::Vector       &solution,
                             const TrilinosWrappers::MPI::Vector &rhs,
-                            const Preconditioner &preconditioner,
-                            SolverControl        &control) const
+                            const Preconditioner                &preconditioner,
+                            SolverControl                       &control) const
   {
     SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
       control,
@@ -201,15 +204,15 @@ namespace PhaseField
 
   unsigned int
   LinearSolver::solve_product_form(
-    const StiffnessPlusDiagonal          &k_hat,
-    const double                          w,
-    const TrilinosWrappers::MPI::Vector  &d,
-    const StiffnessPlusDiagonal          &g,
-    const TrilinosWrappers::MPI::Vector  &mass,
-    const TrilinosWrappers::MPI::Vector  &inverse_mass,
-    TrilinosWrappers::MPI::Vector        &solution,
-    const TrilinosWrappers::MPI::Vector  &rhs,
-    const TrilinosWrappers::MPI::Vector  *interface_mode)
+    const StiffnessPlusDiagonal         &k_hat,
+    const double                         w,
+    const TrilinosWrappers::MPI::Vector &d,
+    const StiffnessPlusDiagonal         &g,
+    const TrilinosWrappers::MPI::Vector &mass,
+    const TrilinosWrappers::MPI::Vector &inverse_mass,
+    TrilinosWrappers::MPI::Vector       &solution,
+    const TrilinosWrappers::MPI::Vector &rhs,
+    const TrilinosWrappers::MPI::Vector *interface_mode)
   {
     Assert(solver_type == LinearSolverType::iterative, ExcInternalError());
     const ProductFormMatrix s(k_hat, w, d, inverse_mass);

@@ -70,11 +70,8 @@ namespace PhaseField
              const Epetra_MultiVector &x,
              Epetra_MultiVector       &y) const override;
     int
-    Solve(bool,
-          bool,
-          bool,
-          const Epetra_MultiVector &,
-          Epetra_MultiVector &) const override;
+    Solve(bool, bool, bool, const Epetra_MultiVector &, Epetra_MultiVector &)
+      const override;
     int
     InvRowSums(Epetra_Vector &) const override;
     int
@@ -151,7 +148,7 @@ namespace PhaseField
     const Epetra_CrsMatrix &
     l() const;
 
-    const dealii::TrilinosWrappers::SparseMatrix *stiffness = nullptr;
+    const dealii::TrilinosWrappers::SparseMatrix *stiffness        = nullptr;
     double                                        stiffness_factor = 0;
     dealii::TrilinosWrappers::MPI::Vector         diagonal;
   };

@@ -190,10 +190,10 @@ namespace PhaseField
      * The product form of S_V (no Schur solver): G, its multigrid, 1 - V^2
      * and gamma^2/m.
      */
-    StiffnessPlusDiagonal                  schur_factor;
-    std::unique_ptr<SchurPreconditioner>   schur_multigrid;
-    Vector                                 interface_mode;
-    double                                 schur_inverse_scale = 0;
+    StiffnessPlusDiagonal                schur_factor;
+    std::unique_ptr<SchurPreconditioner> schur_multigrid;
+    Vector                               interface_mode;
+    double                               schur_inverse_scale = 0;
     /** The direct solver of S_V, or null. */
     LinearSolver *schur_solver = nullptr;
     /** S_V, the V of the iterate and the coefficients of B. */

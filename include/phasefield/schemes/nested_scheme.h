@@ -155,8 +155,8 @@ namespace PhaseField
      * The two matrices of the reduced Newton system at a state: K(V) and
      * the Schur complement S, assembled (direct solver) or in product
      * form (iterative solver). K(V), Khat and G are kept as operators on
-     * the stiffness matrix (StiffnessPlusDiagonal), not as matrices. For the biharmonic model (no double well)
-     * they are independent of the state.
+     * the stiffness matrix (StiffnessPlusDiagonal), not as matrices. For the
+     * biharmonic model (no double well) they are independent of the state.
      */
     struct ReducedMatrices
     {
@@ -166,9 +166,9 @@ namespace PhaseField
       /** L M^-1 L, from which S is assembled (direct solver). */
       std::unique_ptr<StiffnessSquare<dim>> stiffness_square;
       /** Product form of S (iterative solver): Khat, diag b M + E, G. */
-      StiffnessPlusDiagonal                  k_hat;
-      Vector                                 diagonal;
-      StiffnessPlusDiagonal                  g;
+      StiffnessPlusDiagonal k_hat;
+      Vector                diagonal;
+      StiffnessPlusDiagonal g;
       /** 1 - V^2, the near kernel of G (SchurPreconditioner). */
       Vector interface_mode;
       /**
@@ -408,12 +408,12 @@ namespace PhaseField
      * preconditioner of the augmented Lagrangian's trust region.
      */
     void
-    build_schur_factor(const Vector                           &v,
-                       const double                            b,
-                       const double                            w,
-                       const double                            m,
-                       StiffnessPlusDiagonal                  &g,
-                       Vector &interface_mode) const;
+    build_schur_factor(const Vector          &v,
+                       const double           b,
+                       const double           w,
+                       const double           m,
+                       StiffnessPlusDiagonal &g,
+                       Vector                &interface_mode) const;
 
     /**
      * The shift gamma of build_schur_factor(). The preconditioner of the

@@ -142,15 +142,15 @@ namespace PhaseField
      */
     unsigned int
     solve_product_form(
-      const StiffnessPlusDiagonal                  &k_hat,
-      const double                                  w,
-      const dealii::TrilinosWrappers::MPI::Vector  &d,
-      const StiffnessPlusDiagonal                  &g,
-      const dealii::TrilinosWrappers::MPI::Vector  &mass,
-      const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass,
-      dealii::TrilinosWrappers::MPI::Vector        &solution,
-      const dealii::TrilinosWrappers::MPI::Vector  &rhs,
-      const dealii::TrilinosWrappers::MPI::Vector  *interface_mode = nullptr);
+      const StiffnessPlusDiagonal                 &k_hat,
+      const double                                 w,
+      const dealii::TrilinosWrappers::MPI::Vector &d,
+      const StiffnessPlusDiagonal                 &g,
+      const dealii::TrilinosWrappers::MPI::Vector &mass,
+      const dealii::TrilinosWrappers::MPI::Vector &inverse_mass,
+      dealii::TrilinosWrappers::MPI::Vector       &solution,
+      const dealii::TrilinosWrappers::MPI::Vector &rhs,
+      const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr);
 
     /**
      * Solve @p op x = @p rhs by flexible GMRES with the preconditioner
