@@ -115,6 +115,8 @@ namespace PhaseField
       double slope       = 0;
       double lambda      = 1;
       double shift       = 0;
+      /** The tolerances of the linear solves. */
+      internal::ForcingTerm forcing;
     };
 
 
@@ -122,8 +124,7 @@ namespace PhaseField
     Direction
     DescentNewton::find_descent_direction(const unsigned int it)
     {
-      internal::set_inexact_newton_tolerance(
-        linear_solver, control, it, target, norm);
+      forcing.set_tolerance(linear_solver, control, it, target, norm);
       for (;;)
         {
           if (!solve_shifted_system(it))

@@ -141,11 +141,11 @@ namespace PhaseField
     // NewtonControl::watchdog_factor; the norm of the saddle-point
     // residual is a poor merit function far from the solution, and damping
     // the first update usually costs two or three extra iterations.
-    bool watchdog_used = false;
+    bool                  watchdog_used = false;
+    internal::ForcingTerm forcing;
     for (unsigned int it = 1; it <= control.max_iterations; ++it)
       {
-        internal::set_inexact_newton_tolerance(
-          linear_solver, control, it, target, norm);
+        forcing.set_tolerance(linear_solver, control, it, target, norm);
         unsigned int linear_iterations = 0;
         try
           {

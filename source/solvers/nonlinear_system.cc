@@ -73,19 +73,44 @@ namespace PhaseField
 
 
     void
-    set_inexact_newton_tolerance(LinearSolver        &linear_solver,
-                                 const NewtonControl &control,
-                                 const unsigned int   iteration,
-                                 const double         target,
-                                 const double         norm)
+    ForcingTerm::set_tolerance(LinearSolver        &linear_solver,
+                               const NewtonControl &control,
+                               const unsigned int   iteration,
+                               const double         target,
+                               const double         norm)
     {
-      constexpr double first_linear_tolerance = 1e-3;
-      constexpr double linear_safety_factor   = 0.05;
-      if (control.adapt_linear_tolerance)
-        linear_solver.set_tolerance(
-          iteration == 1 ? first_linear_tolerance :
-                           std::min(first_linear_tolerance,
-                                    linear_safety_factor * target / norm));
+      if (!control.adapt_linear_tolerance)
+        return;
+      // Eisenstat and Walker's choice 2: gamma = 0.9, alpha = 2
+      constexpr double gamma                = 0.9;
+      constexpr double safeguard_threshold  = 0.1;
+      constexpr double linear_safety_factor = 0.05;
+      constexpr double direct_forcing       = 1e-3;
+      if (linear_solver.type() == LinearSolverType::direct)
+        {
+          // a factorisation makes tight solves cheap, loose ones cost
+          // Newton iterations: 1e-3, then just enough for the target
+          linear_solver.set_tolerance(
+            iteration == 1 ?
+              direct_forcing :
+              std::min(direct_forcing, linear_safety_factor * target / norm));
+          return;
+        }
+      double forcing = max_forcing;
+      if (iteration > 1 && previous_norm > 0)
+        {
+          const double ratio   = norm / previous_norm;
+          forcing              = gamma * ratio * ratio;
+          const double carried = gamma * previous_forcing * previous_forcing;
+          if (carried > safeguard_threshold)
+            forcing = std::max(forcing, carried);
+        }
+      forcing =
+        std::min(max_forcing,
+                 std::max(forcing, linear_safety_factor * target / norm));
+      previous_norm    = norm;
+      previous_forcing = forcing;
+      linear_solver.set_tolerance(forcing);
     }
 
 

@@ -184,18 +184,43 @@ namespace PhaseField
                  StepReport                                       &report);
 
     /**
-     * The tolerance of the linear solve in Newton iteration @p iteration
-     * (inexact Newton), if control.adapt_linear_tolerance: loose in the
-     * first iteration, whose update the nonlinearity limits, then just
-     * accurate enough to reach @p target from the residual norm @p norm in
-     * one more iteration.
+     * The tolerances of the linear solves of an inexact Newton method
+     * (if NewtonControl::adapt_linear_tolerance): the forcing terms of
+     * Eisenstat and Walker's "choice 2" (SIAM J. Sci. Comput. 17 (1996)
+     * 16-32), eta_k = 0.9 (|R_k| / |R_(k-1)|)^2, with their safeguard
+     * eta_k >= 0.9 eta_(k-1)^2 where that is above 0.1, at most
+     * max_forcing and, as Kelley's safeguard against oversolving, at least
+     * 0.05 target / |R_k| (the last update need not be more accurate than
+     * what reaches the target). The first solve of a Newton method gets
+     * max_forcing: far from the solution the nonlinearity, not the
+     * linear solve, limits the update. One object per Newton solve.
      */
-    void
-    set_inexact_newton_tolerance(LinearSolver        &linear_solver,
-                                 const NewtonControl &control,
-                                 const unsigned int   iteration,
-                                 const double         target,
-                                 const double         norm);
+    class ForcingTerm
+    {
+    public:
+      /**
+       * Set the tolerance of @p linear_solver for Newton iteration
+       * @p iteration (from 1) at the residual norm @p norm, for a Newton
+       * method that stops at @p target.
+       */
+      void
+      set_tolerance(LinearSolver        &linear_solver,
+                    const NewtonControl &control,
+                    const unsigned int   iteration,
+                    const double         target,
+                    const double         norm);
+
+      /**
+       * Largest (and first) forcing term. 0.1 measured against 0.3 and
+       * against the fixed first tolerance 1e-3 used before
+       * (doc/benchmarks.md, "Eisenstat-Walker forcing terms").
+       */
+      static constexpr double max_forcing = 0.1;
+
+    private:
+      double previous_norm    = 0;
+      double previous_forcing = 0;
+    };
 
     /** The message of a Newton method that ran out of iterations. */
     void
