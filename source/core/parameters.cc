@@ -572,9 +572,16 @@ namespace PhaseField
                       "sqrt(R.M^-1 R)) has dropped by this factor in the "
                       "current time step.");
     prm.declare_entry("Absolute tolerance",
-                      "1e-12",
+                      "1e-10",
                       Patterns::Double(0.),
-                      "Stop when sqrt(R.M^-1 R) is below this value.");
+                      "Also stop when sqrt(R.M^-1 R) is below this value "
+                      "times the size of the terms that cancel in R (for "
+                      "the nested scheme |U| + a |V-U| + |P| in the mass "
+                      "norm): a tolerance relative to the scale of R, "
+                      "which ends the Newton iteration of a step in which "
+                      "the solution hardly changes (1e-12 until "
+                      "2026-11-27; doc/benchmarks.md, \"Newton tolerances "
+                      "of nearly stationary steps\").");
     prm.declare_entry("Maximum iterations",
                       "30",
                       Patterns::Integer(1),
