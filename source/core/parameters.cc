@@ -580,8 +580,9 @@ namespace PhaseField
                       "norm): a tolerance relative to the scale of R, "
                       "which ends the Newton iteration of a step in which "
                       "the solution hardly changes (1e-12 until "
-                      "2026-11-27; doc/benchmarks.md, \"Newton tolerances "
-                      "of nearly stationary steps\").");
+                      "2026-11-27; doc/benchmarks.md, \"Eisenstat-Walker "
+                      "forcing terms; Newton tolerances of nearly "
+                      "stationary steps\").");
     prm.declare_entry("Maximum iterations",
                       "30",
                       Patterns::Integer(1),

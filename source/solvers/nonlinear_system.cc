@@ -81,9 +81,7 @@ namespace PhaseField
     {
       if (!control.adapt_linear_tolerance)
         return;
-      // Eisenstat and Walker's choice 2: gamma = 0.9, alpha = 2
       constexpr double gamma                = 0.9;
-      constexpr double safeguard_threshold  = 0.1;
       constexpr double linear_safety_factor = 0.05;
       constexpr double direct_forcing       = 1e-3;
       if (linear_solver.type() == LinearSolverType::direct)
@@ -96,20 +94,17 @@ namespace PhaseField
               std::min(direct_forcing, linear_safety_factor * target / norm));
           return;
         }
-      double forcing = max_forcing;
-      if (iteration > 1 && previous_norm > 0)
-        {
-          const double ratio   = norm / previous_norm;
-          forcing              = gamma * ratio * ratio;
-          const double carried = gamma * previous_forcing * previous_forcing;
-          if (carried > safeguard_threshold)
-            forcing = std::max(forcing, carried);
-        }
-      forcing =
-        std::min(max_forcing,
-                 std::max(forcing, linear_safety_factor * target / norm));
-      previous_norm    = norm;
-      previous_forcing = forcing;
+      // Eisenstat and Walker's choice 2 with gamma = 0.9, alpha = 2 (their
+      // safeguard gamma eta_(k-1)^2, applied above 0.1, never acts below
+      // max_forcing = 0.1)
+      const double forcing =
+        iteration == 1 || previous_norm <= 0 ?
+          max_forcing :
+          std::min(max_forcing,
+                   std::max(gamma * (norm / previous_norm) *
+                              (norm / previous_norm),
+                            linear_safety_factor * target / norm));
+      previous_norm = norm;
       linear_solver.set_tolerance(forcing);
     }
 

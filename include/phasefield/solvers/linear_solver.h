@@ -188,6 +188,13 @@ namespace PhaseField
     void
     set_tolerance(const double relative_tolerance);
 
+    /** The relative tolerance of the next solves. */
+    double
+    get_tolerance() const
+    {
+      return tolerance;
+    }
+
     /**
      * Factorise indefinite matrices (the 3-field Newton matrix of edge
      * restoration): MUMPS gets @p percent per cent extra workspace for

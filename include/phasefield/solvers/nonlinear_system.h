@@ -187,13 +187,16 @@ namespace PhaseField
      * The tolerances of the linear solves of an inexact Newton method
      * (if NewtonControl::adapt_linear_tolerance): the forcing terms of
      * Eisenstat and Walker's "choice 2" (SIAM J. Sci. Comput. 17 (1996)
-     * 16-32), eta_k = 0.9 (|R_k| / |R_(k-1)|)^2, with their safeguard
-     * eta_k >= 0.9 eta_(k-1)^2 where that is above 0.1, at most
-     * max_forcing and, as Kelley's safeguard against oversolving, at least
-     * 0.05 target / |R_k| (the last update need not be more accurate than
-     * what reaches the target). The first solve of a Newton method gets
-     * max_forcing: far from the solution the nonlinearity, not the
-     * linear solve, limits the update. One object per Newton solve.
+     * 16-32), eta_k = 0.9 (|R_k| / |R_(k-1)|)^2, at most max_forcing
+     * (their safeguard against a sudden drop of eta_k, 0.9 eta_(k-1)^2
+     * where that is above 0.1, cannot act below it) and, as Kelley's
+     * safeguard against oversolving, at least 0.05 target / |R_k| (the
+     * last update need not be more accurate than what reaches the
+     * target). The first solve of a Newton method gets max_forcing: far
+     * from the solution the nonlinearity, not the linear solve, limits
+     * the update. With the direct solver, whose tight solves are cheap,
+     * the first solve gets 1e-3 and later ones 0.05 target / |R_k|, at
+     * most 1e-3. One object per Newton solve.
      */
     class ForcingTerm
     {
@@ -213,13 +216,13 @@ namespace PhaseField
       /**
        * Largest (and first) forcing term. 0.1 measured against 0.3 and
        * against the fixed first tolerance 1e-3 used before
-       * (doc/benchmarks.md, "Eisenstat-Walker forcing terms").
+       * (doc/benchmarks.md, "Eisenstat-Walker forcing terms; Newton
+       * tolerances of nearly stationary steps").
        */
       static constexpr double max_forcing = 0.1;
 
     private:
-      double previous_norm    = 0;
-      double previous_forcing = 0;
+      double previous_norm = 0;
     };
 
     /** The message of a Newton method that ran out of iterations. */

@@ -1,0 +1,56 @@
+// internal::ForcingTerm, the tolerances of the linear solves of an inexact
+// Newton method (doc/willmore_flow.md, "Newton's method"), for a residual
+// history |R_k| = 1, 0.5, 0.05, 1e-4, 1e-7 and a target of 1e-8:
+// - iterative solver (Eisenstat-Walker choice 2): 0.1 first, then
+//   min(0.1, max(0.9 (|R_k|/|R_(k-1)|)^2, 0.05 target/|R_k|)), i.e.
+//   0.1 (0.225 capped), 0.009, 5e-6 (0.9 * 0.002^2 = 3.6e-6 is below
+//   the floor 0.05 * 1e-8 / 1e-4), 5e-3 (the floor is 5e-3; a quadratic
+//   drop of 1e-3 would give 9e-7);
+// - direct solver: 1e-3 first, then min(1e-3, 0.05 target/|R_k|);
+// - a new object (a new Newton solve) starts again at its first value;
+// - without NewtonControl::adapt_linear_tolerance the tolerance given to
+//   the solver stays, and no tolerance is set below it.
+
+#include "tests.h"
+
+#include <phasefield/solvers/linear_solver.h>
+#include <phasefield/solvers/nonlinear_system.h>
+
+using namespace PhaseField;
+
+namespace
+{
+  void
+  print_history(const LinearSolverType type, const bool adapt)
+  {
+    LinearSolver  solver(type, 1e-12, 100);
+    NewtonControl control;
+    control.adapt_linear_tolerance = adapt;
+    const double          target   = 1e-8;
+    internal::ForcingTerm forcing;
+    unsigned int          iteration = 0;
+    for (const double norm : {1., 0.5, 0.05, 1e-4, 1e-7})
+      {
+        forcing.set_tolerance(solver, control, ++iteration, target, norm);
+        Testing::log() << ' ' << solver.get_tolerance();
+      }
+    internal::ForcingTerm next_solve;
+    next_solve.set_tolerance(solver, control, 1, target, 1e-3);
+    Testing::log() << " | new solve: " << solver.get_tolerance() << std::endl;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  Testing::log() << std::setprecision(6);
+  Testing::log() << "iterative:";
+  print_history(LinearSolverType::iterative, true);
+  Testing::log() << "direct:";
+  print_history(LinearSolverType::direct, true);
+  Testing::log() << "not adapted:";
+  print_history(LinearSolverType::iterative, false);
+}
