@@ -68,16 +68,16 @@ namespace PhaseField
                       TrilinosWrappers::MPI::Vector        &solution,
                       const TrilinosWrappers::MPI::Vector  &rhs)
   {
-    solution = 0;
-    if (solver_type == LinearSolverType::direct && constant_matrix &&
-        factorization && factorization->size() == matrix.m())
-      {
-        factorization->vmult(solution, rhs);
-        last_iterations = 1;
-        return last_iterations;
-      }
     if (solver_type == LinearSolverType::direct)
       {
+        if (constant_matrix && factorization &&
+            factorization->size() == matrix.m())
+          {
+            factorization->vmult(solution, rhs);
+            last_iterations = 1;
+            return last_iterations;
+          }
+        solution        = 0;
         last_iterations = solve_direct(matrix, solution, rhs);
         return last_iterations;
       }

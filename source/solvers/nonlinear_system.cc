@@ -81,29 +81,24 @@ namespace PhaseField
     {
       if (!control.adapt_linear_tolerance)
         return;
+      // Eisenstat and Walker's choice 2, gamma = 0.9 and alpha = 2 (their
+      // safeguard gamma eta_(k-1)^2, applied above 0.1, never acts below
+      // max_forcing = 0.1). A factorisation makes tight solves cheap and
+      // loose ones cost Newton iterations: with the direct solver 1e-3,
+      // then just enough for the target.
       constexpr double gamma                = 0.9;
       constexpr double linear_safety_factor = 0.05;
       constexpr double direct_forcing       = 1e-3;
-      if (linear_solver.type() == LinearSolverType::direct)
+      const bool   direct  = linear_solver.type() == LinearSolverType::direct;
+      const double cap     = direct ? direct_forcing : max_forcing;
+      double       forcing = cap;
+      if (iteration > 1)
         {
-          // a factorisation makes tight solves cheap, loose ones cost
-          // Newton iterations: 1e-3, then just enough for the target
-          linear_solver.set_tolerance(
-            iteration == 1 ?
-              direct_forcing :
-              std::min(direct_forcing, linear_safety_factor * target / norm));
-          return;
+          const double ratio = norm / previous_norm;
+          forcing            = std::min(cap,
+                             std::max(direct ? 0. : gamma * ratio * ratio,
+                                      linear_safety_factor * target / norm));
         }
-      // Eisenstat and Walker's choice 2 with gamma = 0.9, alpha = 2 (their
-      // safeguard gamma eta_(k-1)^2, applied above 0.1, never acts below
-      // max_forcing = 0.1)
-      const double forcing =
-        iteration == 1 || previous_norm <= 0 ?
-          max_forcing :
-          std::min(max_forcing,
-                   std::max(gamma * (norm / previous_norm) *
-                              (norm / previous_norm),
-                            linear_safety_factor * target / norm));
       previous_norm = norm;
       linear_solver.set_tolerance(forcing);
     }
