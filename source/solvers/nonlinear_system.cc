@@ -89,9 +89,13 @@ namespace PhaseField
       constexpr double gamma                = 0.9;
       constexpr double linear_safety_factor = 0.05;
       constexpr double direct_forcing       = 1e-3;
+      // a solve to half the target leaves room for the quadratic remainder
+      constexpr double first_solve_share = 0.5;
       const bool   direct  = linear_solver.type() == LinearSolverType::direct;
       const double cap     = direct ? direct_forcing : max_forcing;
       double       forcing = cap;
+      if (iteration == 1 && !direct && target / norm >= min_reachable_reduction)
+        forcing = std::min(cap, first_solve_share * target / norm);
       if (iteration > 1)
         {
           const double ratio = norm / previous_norm;
