@@ -226,8 +226,10 @@ namespace PhaseField
 
       /**
        * Smallest reduction target / |R_0| that the first linear solve of
-       * an iterative solver aims at directly (three decades, the first
-       * tolerance of the direct solver); see doc/benchmarks.md.
+       * an iterative solver aims at directly: three decades, the first
+       * tolerance of the direct solver. Four decades were measured and
+       * gave nothing: there the linear model no longer held
+       * (doc/benchmarks.md, "A first solve to the target").
        */
       static constexpr double min_reachable_reduction = 1e-3;
 
