@@ -8,10 +8,11 @@
 //   drop of 1e-3 would give 9e-7);
 // - direct solver: 1e-3 first, then min(1e-3, 0.05 target/|R_k|);
 // - a new object (a new Newton solve) starts again at its first value, for
-//   |R_0| = 1e-3 and 2e-5; at |R_0| = 2e-6 the target is within reach of
-//   one solve (target/|R_0| = 5e-3 >= 1e-3), and the iterative solver's
-//   first tolerance is 0.5 target/|R_0| = 2.5e-3 (the direct solver keeps
-//   1e-3);
+//   |R_0| = 1e-3 and 2e-5; at |R_0| = 2e-6 and 6.25e-6 the target is
+//   within reach of one solve (target/|R_0| = 5e-3 and 1.6e-3, >= 1e-3),
+//   and the first tolerance is min(cap, 0.5 target/|R_0|): 2.5e-3 and
+//   8e-4 for the iterative solver (cap 0.1), 1e-3 and 8e-4 for the direct
+//   one (cap 1e-3);
 // - without NewtonControl::adapt_linear_tolerance the tolerance given to
 //   the solver stays, and no tolerance is set below it.
 
@@ -39,7 +40,7 @@ namespace
         Testing::log() << ' ' << solver.get_tolerance();
       }
     Testing::log() << " | new solves:";
-    for (const double norm : {1e-3, 2e-5, 2e-6})
+    for (const double norm : {1e-3, 2e-5, 2e-6, 6.25e-6})
       {
         internal::ForcingTerm next_solve;
         next_solve.set_tolerance(solver, control, 1, target, norm);

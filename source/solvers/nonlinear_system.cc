@@ -81,27 +81,27 @@ namespace PhaseField
     {
       if (!control.adapt_linear_tolerance)
         return;
-      // Eisenstat and Walker's choice 2, gamma = 0.9 and alpha = 2 (their
-      // safeguard gamma eta_(k-1)^2, applied above 0.1, never acts below
-      // max_forcing = 0.1). A factorisation makes tight solves cheap and
-      // loose ones cost Newton iterations: with the direct solver 1e-3,
-      // then just enough for the target.
+      // Eisenstat and Walker's choice 2 with gamma = 0.9, alpha = 2; the
+      // direct solver has no such term (see the class documentation)
       constexpr double gamma                = 0.9;
       constexpr double linear_safety_factor = 0.05;
       constexpr double direct_forcing       = 1e-3;
       // a solve to half the target leaves room for the quadratic remainder
       constexpr double first_solve_share = 0.5;
-      const bool   direct  = linear_solver.type() == LinearSolverType::direct;
-      const double cap     = direct ? direct_forcing : max_forcing;
-      double       forcing = cap;
-      if (iteration == 1 && !direct && target / norm >= min_reachable_reduction)
-        forcing = std::min(cap, first_solve_share * target / norm);
-      if (iteration > 1)
+      const bool   direct    = linear_solver.type() == LinearSolverType::direct;
+      const double cap       = direct ? direct_forcing : max_forcing;
+      const double reduction = target / norm;
+      double       forcing;
+      if (iteration == 1)
+        forcing = reduction >= min_reachable_reduction ?
+                    std::min(cap, first_solve_share * reduction) :
+                    cap;
+      else
         {
           const double ratio = norm / previous_norm;
           forcing            = std::min(cap,
                              std::max(direct ? 0. : gamma * ratio * ratio,
-                                      linear_safety_factor * target / norm));
+                                      linear_safety_factor * reduction));
         }
       previous_norm = norm;
       linear_solver.set_tolerance(forcing);

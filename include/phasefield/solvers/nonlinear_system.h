@@ -198,8 +198,10 @@ namespace PhaseField
      * |R_0| <= target / min_reachable_reduction (a nearly stationary time
      * step), instead solves its first system to half the target, so that
      * one update can end it. With the direct solver, whose tight solves are
-     * cheap, the first solve gets 1e-3 and later ones 0.05 target / |R_k|, at
-     * most 1e-3. One object per Newton solve.
+     * cheap, the cap is 1e-3 and there is no Eisenstat-Walker term: the
+     * first solve gets 1e-3 (less only where target / |R_0| is between 1e-3
+     * and 2e-3) and later ones 0.05 target / |R_k|, at most 1e-3. One
+     * object per Newton solve.
      */
     class ForcingTerm
     {
@@ -225,9 +227,9 @@ namespace PhaseField
       static constexpr double max_forcing = 0.1;
 
       /**
-       * Smallest reduction target / |R_0| that the first linear solve of
-       * an iterative solver aims at directly: three decades, the first
-       * tolerance of the direct solver. Four decades were measured and
+       * Smallest reduction target / |R_0| that the first linear solve
+       * aims at directly: three decades, the first tolerance of the direct
+       * solver. Four decades were measured and
        * gave nothing: there the linear model no longer held
        * (doc/benchmarks.md, "A first solve to the target").
        */
