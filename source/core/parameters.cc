@@ -510,6 +510,18 @@ namespace PhaseField
       "l >= Finest level: no coarse start. Needs Mesh / Adaptive = true "
       "and l >= Mesh / Coarsest level; not used on resume from a "
       "checkpoint.");
+    prm.declare_entry(
+      "Extrapolated start",
+      "true",
+      Patterns::Bool(),
+      "Start the iteration of a step of the nested scheme from the last "
+      "result plus theta times the last change, theta = |dU_n| / "
+      "|dU_(n-1)| at most 1 (the changes of the last two steps), instead "
+      "of from the last result, where the residual of the step is smaller "
+      "there. Only after two steps of the same size on the same mesh; "
+      "re-meshing and checkpoints start the history anew. "
+      "The step solved is the same, only the start of its iteration "
+      "changes: nearly stationary steps need fewer iterations.");
   }
 
 
@@ -529,6 +541,8 @@ namespace PhaseField
     n_ramp_steps = with_step_counts ? prm.get_integer("Ramp-up steps") : 0;
     coarse_start_level =
       with_step_counts ? prm.get_integer("Coarse start level") : 0;
+    extrapolated_start =
+      with_step_counts ? prm.get_bool("Extrapolated start") : false;
     prm.leave_subsection();
   }
 

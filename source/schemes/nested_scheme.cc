@@ -1104,6 +1104,22 @@ namespace PhaseField
 
 
   template <int dim>
+  double
+  NestedScheme<dim>::start_residual_norm(const BlockVector &old_state,
+                                         const BlockVector &state,
+                                         const double       tau) const
+  {
+    const NestedStep<dim> step(discretization,
+                               coefficients(tau),
+                               old_state.block(Field::U));
+    BlockVector           residual(state);
+    step.residual(state, residual);
+    return step.residual_norm(residual);
+  }
+
+
+
+  template <int dim>
   StepReport
   NestedScheme<dim>::attempt_step(const BlockVector &old_state,
                                   BlockVector       &state,

@@ -63,6 +63,7 @@ namespace PhaseField
     s.verbose             = parameters.output.verbose;
     s.output_directory    = parameters.output_directory;
     s.checkpoint_interval = parameters.checkpoint.interval;
+    s.extrapolated_start  = parameters.model.extrapolated_start;
     return s;
   }
 
@@ -198,6 +199,8 @@ namespace PhaseField
     final_step      = saved.finished ? saved.step : step_offset + n_steps;
     client.after_load(state, saved.problem_data);
     scheme.reset_solver();
+    // the DoFs are in p4est's order now, and a resumed run has no history
+    predictor.forget();
     return saved.step;
   }
 
@@ -212,12 +215,15 @@ namespace PhaseField
     const unsigned int checkpoints = settings.checkpoint_interval;
     for (unsigned int step = first_step; step <= final_step; ++step)
       {
-        old_state = state;
+        old_state              = state;
+        const double tried_tau = first_step_size(step);
         if (step == first_step && first_start_value != nullptr)
           state = *first_start_value;
-        const double     tried_tau = first_step_size(step);
-        double           tau       = tried_tau;
+        else
+          predict_start_value(step, state, tried_tau);
+        double           tau    = tried_tau;
         const StepReport report = advance_on_resolving_mesh(step, state, tau);
+        predictor.record(old_state, state, tau);
         if (settings.regrow_step_size)
           step_size_limit = tau < tried_tau ? tau : 2 * tau;
         // on the mesh of the step, which the step may have refined
@@ -248,6 +254,32 @@ namespace PhaseField
         if (finished)
           break;
       }
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::predict_start_value(const unsigned int step,
+                                     BlockVector       &state,
+                                     const double       tau) const
+  {
+    if (!settings.extrapolated_start || !scheme.iterates_from_start_value())
+      return;
+    BlockVector extrapolated(state);
+    if (!predictor.predict(extrapolated, tau))
+      return;
+    const double plain_norm = scheme.start_residual_norm(old_state, state, tau);
+    const double extrapolated_norm =
+      scheme.start_residual_norm(old_state, extrapolated, tau);
+    const bool better = extrapolated_norm < plain_norm;
+    if (better)
+      state.swap(extrapolated);
+    if (settings.verbose)
+      pcout << "  step " << step << ": residual " << extrapolated_norm
+            << " at the start extrapolated from the last two steps, "
+            << plain_norm << " at the last result: "
+            << (better ? "extrapolated" : "last result") << std::endl;
   }
 
 
@@ -332,6 +364,7 @@ namespace PhaseField
     TimerOutput::Scope t(timer, "mesh: adapt");
     if (!discretization.refine_to_band({&state, &old_state}))
       return;
+    predictor.forget();
     // old_state last: a scheme may keep data of the start of the step
     // (the semi-implicit scheme's F(U^k))
     restore_after_transfer(state, tau);
@@ -418,6 +451,7 @@ namespace PhaseField
     const double before = report_energy ? scheme.energy_law_energy(state) : 0.;
     if (!discretization.adapt_to_phase_field(state, 1., true))
       return;
+    predictor.forget();
     discretization.reinit(old_state, state.n_blocks());
     restore_after_transfer(state, state_tau);
     if (report_energy)

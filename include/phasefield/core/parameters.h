@@ -237,6 +237,11 @@ namespace PhaseField
      * See WillmoreParameters::start_level().
      */
     unsigned int coarse_start_level;
+    /**
+     * Start each step of the nested scheme from the start value
+     * extrapolated from the last two steps (StartValuePredictor).
+     */
+    bool extrapolated_start;
 
     /** Size of time step @p step (1-based), see n_ramp_steps. */
     double

@@ -606,6 +606,17 @@ namespace PhaseField
     prepare_step(BlockVector &state,
                  const double state_tau,
                  const double tau) const override;
+    /** Newton's method (or the descent method) from the start value. */
+    bool
+    iterates_from_start_value() const override
+    {
+      return true;
+    }
+    /** sqrt(R . M^-1 R) of NestedStep::residual() at @p state. */
+    double
+    start_residual_norm(const BlockVector &old_state,
+                        const BlockVector &state,
+                        const double       tau) const override;
     StepReport
     advance(const BlockVector &old_state,
             BlockVector       &state,

@@ -82,6 +82,36 @@ namespace PhaseField
     }
 
     /**
+     * Does advance() iterate from the start value in @p state, so that a
+     * better start saves iterations (StartValuePredictor)? Not for a
+     * scheme whose step is one linear solve or that restarts its own
+     * iteration.
+     */
+    virtual bool
+    iterates_from_start_value() const
+    {
+      return false;
+    }
+
+    /**
+     * The norm in which the iteration of advance() measures convergence,
+     * of the residual of the step of size @p tau from @p old_state at the
+     * start value @p state: of two start values the one with the smaller
+     * norm is taken. Only for a scheme that iterates_from_start_value().
+     */
+    virtual double
+    start_residual_norm(const BlockVector &old_state,
+                        const BlockVector &state,
+                        const double       tau) const
+    {
+      (void)old_state;
+      (void)state;
+      (void)tau;
+      AssertThrow(false, dealii::ExcNotImplemented());
+      return 0;
+    }
+
+    /**
      * One time step of size @p tau from @p old_state: @p state holds the
      * start of the iteration and on return the new state (or, on failure,
      * the last iterate).

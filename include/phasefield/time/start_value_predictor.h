@@ -1,0 +1,67 @@
+#ifndef phasefield_time_start_value_predictor_h
+#define phasefield_time_start_value_predictor_h
+
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+namespace PhaseField
+{
+  /**
+   * The start value of a time step extrapolated from the last two steps.
+   *
+   * Near a stationary state the changes of consecutive steps of one size
+   * tau decay by a roughly constant factor; then the next change is about
+   * theta times the last one, theta = |dU_n| / |dU_(n-1)| (norms of the
+   * U field, so that the ratio measures the motion of the interface), and
+   *
+   *   start of step n+1 = S_n + min(theta, 1) (S_n - S_(n-1))
+   *
+   * for all fields S = (U, V, P, ...): the geometric series of the
+   * changes, at most the linear extrapolation. Right after a fast
+   * transient theta is small and the prediction stays near S_n, where the
+   * linear one would overshoot (the level-8 cube, steps 3-5). It needs two
+   * changes of the same step size on the same mesh: forget() after
+   * every change of the mesh (re-meshing, a checkpoint's reload in p4est
+   * order), and a step of another size starts the history anew. Only
+   * the start of the iteration changes, not the step solved.
+   */
+  class StartValuePredictor
+  {
+  public:
+    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+    /**
+     * Record the step of size @p tau from @p before to @p after (both on
+     * the current mesh).
+     */
+    void
+    record(const BlockVector &before,
+           const BlockVector &after,
+           const double       tau);
+
+    /**
+     * If the history allows a prediction for a step of size @p tau,
+     * overwrite @p state (the last result, the plain start) with the
+     * predicted start and return true; otherwise leave it and return
+     * false.
+     */
+    bool
+    predict(BlockVector &state, const double tau) const;
+
+    /** Drop the history (the mesh changed). */
+    void
+    forget();
+
+  private:
+    /** S_n - S_(n-1), valid if n_changes > 0. */
+    BlockVector last_change;
+    /** |U_n - U_(n-1)| and |U_(n-1) - U_(n-2)| (l2 norms of the U block). */
+    double last_change_norm     = 0;
+    double previous_change_norm = 0;
+    /** The step size of the recorded changes. */
+    double tau = 0;
+    /** Consecutive recorded changes of size tau on this mesh (at most 2). */
+    unsigned int n_changes = 0;
+  };
+} // namespace PhaseField
+
+#endif
