@@ -223,7 +223,8 @@ namespace PhaseField
           predict_start_value(step, state, tried_tau);
         double           tau    = tried_tau;
         const StepReport report = advance_on_resolving_mesh(step, state, tau);
-        predictor.record(old_state, state, tau);
+        if (extrapolates())
+          predictor.record(old_state, state, tau);
         if (settings.regrow_step_size)
           step_size_limit = tau < tried_tau ? tau : 2 * tau;
         // on the mesh of the step, which the step may have refined
@@ -259,12 +260,21 @@ namespace PhaseField
 
 
   template <int dim>
+  bool
+  TimeLoop<dim>::extrapolates() const
+  {
+    return settings.extrapolated_start && scheme.iterates_from_start_value();
+  }
+
+
+
+  template <int dim>
   void
   TimeLoop<dim>::predict_start_value(const unsigned int step,
                                      BlockVector       &state,
                                      const double       tau) const
   {
-    if (!settings.extrapolated_start || !scheme.iterates_from_start_value())
+    if (!extrapolates())
       return;
     BlockVector extrapolated(state);
     if (!predictor.predict(extrapolated, tau))

@@ -260,6 +260,13 @@ namespace PhaseField
                         BlockVector       &state,
                         const double       tau) const;
 
+    /**
+     * Do steps start from the predictor's extrapolation (settings and
+     * scheme)? Only then does the loop keep the history of the steps.
+     */
+    bool
+    extrapolates() const;
+
     /** The columns of statistics.csv. */
     std::vector<std::string>
     statistics_columns() const;
@@ -412,7 +419,7 @@ namespace PhaseField
      */
     double      step_size_limit = 0;
     BlockVector old_state;
-    /** The history of the steps on the current mesh. */
+    /** The history of the steps on the current mesh (if extrapolates()). */
     StartValuePredictor predictor;
   };
 } // namespace PhaseField
