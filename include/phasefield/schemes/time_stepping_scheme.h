@@ -94,21 +94,25 @@ namespace PhaseField
     }
 
     /**
-     * The norm in which the iteration of advance() measures convergence,
-     * of the residual of the step of size @p tau from @p old_state at the
-     * start value @p state: of two start values the one with the smaller
-     * norm is taken. Only for a scheme that iterates_from_start_value().
+     * Should the step of size @p tau from @p old_state start from
+     * @p extrapolated (StartValuePredictor's extrapolation, which the
+     * scheme may complete, e.g. by re-solving fields that depend on
+     * others) rather than from @p last_result? Prints its reasons with
+     * `Output / Verbose`. Only for a scheme that
+     * iterates_from_start_value().
      */
-    virtual double
-    start_residual_norm(const BlockVector &old_state,
-                        const BlockVector &state,
-                        const double       tau) const
+    virtual bool
+    take_extrapolated_start(const BlockVector &old_state,
+                            const BlockVector &last_result,
+                            BlockVector       &extrapolated,
+                            const double       tau) const
     {
       (void)old_state;
-      (void)state;
+      (void)last_result;
+      (void)extrapolated;
       (void)tau;
       AssertThrow(false, dealii::ExcNotImplemented());
-      return 0;
+      return false;
     }
 
     /**

@@ -3,6 +3,8 @@
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <vector>
+
 namespace PhaseField
 {
   /**
@@ -19,15 +21,19 @@ namespace PhaseField
    * changes, at most the linear extrapolation. Right after a fast
    * transient theta is small and the prediction stays near S_n, where the
    * linear one would overshoot (the level-8 cube, steps 3-5). It needs two
-   * changes of the same step size on the same mesh: forget() after
-   * every change of the mesh (re-meshing, a checkpoint's reload in p4est
-   * order), and a step of another size starts the history anew. Only
-   * the start of the iteration changes, not the step solved.
+   * changes of the same step size: a step of another size starts the
+   * history anew. A change of the mesh transfers the history with the
+   * state (history()); forget() where the DoFs change without a
+   * transfer (a checkpoint's reload in p4est order). The norms of the
+   * changes are taken on the meshes of their steps: the changes lie in
+   * the band of finest cells, whose nodal density a re-meshing keeps.
+   * Only the start of the iteration changes, not the step solved.
    */
   class StartValuePredictor
   {
   public:
     using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
 
     /**
      * Record the step of size @p tau from @p before to @p after (both on
@@ -47,7 +53,14 @@ namespace PhaseField
     bool
     predict(BlockVector &state, const double tau) const;
 
-    /** Drop the history (the mesh changed). */
+    /**
+     * The vectors of the history, to be transferred to a new mesh with
+     * the state (empty without a history).
+     */
+    std::vector<BlockVector *>
+    history();
+
+    /** Drop the history (the DoFs changed without a transfer). */
     void
     forget();
 
