@@ -7,9 +7,11 @@
 //   |dU_2| / |dU_1| = 0.5034 (l2 norms of the U changes), and the start
 //   of step 3 moves the interface as the last step did, by theta 0.2:
 //   U = tanh(x - 0.7007) = (-0.6048 0.2907 1), P = 15 + 5 theta = 17.517.
-//   The far node stays at 1 exactly;
+//   The far node stays at 1 exactly. The linear extrapolation (Newton's
+//   method) gives U_2 + theta (U_2 - U_1) = (-0.6161 0.3009 1) instead;
 // - no prediction after one change only, for a step of another size, or
-//   after forget(); history() holds one vector after a step, none after
+//   after forget(); history() holds two vectors after a step (the change
+//   of all fields and that of the profile variable), none after
 //   forget();
 // - growing changes (c = 1.1: |dU_3| / |dU_2| = 2.46): theta is capped at
 //   1, U = tanh(x - 1.6) = (-0.9217 -0.5370 1), P = 15;
@@ -52,11 +54,13 @@ namespace
   print_prediction(const std::string         &label,
                    const StartValuePredictor &predictor,
                    const BlockVector         &last,
-                   const double               tau)
+                   const double               tau,
+                   const StartExtrapolation   extrapolation =
+                     StartExtrapolation::profile)
   {
     BlockVector start = last;
     Testing::log() << label << ": ";
-    if (!predictor.predict(start, tau))
+    if (!predictor.predict(start, tau, extrapolation))
       Testing::log() << "none" << std::endl;
     else
       Testing::log() << start.block(0)[0] << ' ' << start.block(0)[1] << ' '
@@ -80,6 +84,8 @@ main(int argc, char **argv)
   print_prediction("one change", predictor, s1, 0.1);
   predictor.record(s1, s2, 0.1);
   print_prediction("decaying changes", predictor, s2, 0.1);
+  print_prediction(
+    "decaying changes, linear", predictor, s2, 0.1, StartExtrapolation::linear);
   print_prediction("another step size", predictor, s2, 0.05);
   predictor.record(s2, s3, 0.1);
   print_prediction("growing changes", predictor, s3, 0.1);

@@ -1104,6 +1104,16 @@ namespace PhaseField
 
 
   template <int dim>
+  StartExtrapolation
+  NestedScheme<dim>::start_extrapolation() const
+  {
+    return solves_by_descent() ? StartExtrapolation::profile :
+                                 StartExtrapolation::linear;
+  }
+
+
+
+  template <int dim>
   bool
   NestedScheme<dim>::take_extrapolated_start(const BlockVector &old_state,
                                              const BlockVector &last_result,

@@ -37,26 +37,32 @@ namespace PhaseField
     last_change -= before;
     previous_change_norm = last_change_norm;
     last_change_norm     = last_change.block(0).l2_norm();
-    last_change.block(0) = profile_variable(after.block(0));
-    last_change.block(0) -= profile_variable(before.block(0));
+    last_profile_change.reinit(1);
+    last_profile_change.block(0) = profile_variable(after.block(0));
+    last_profile_change.block(0) -= profile_variable(before.block(0));
+    last_profile_change.collect_sizes();
     n_changes            = std::min(n_changes + 1, 2u);
   }
 
 
 
   bool
-  StartValuePredictor::predict(BlockVector &state, const double step_size) const
+  StartValuePredictor::predict(BlockVector             &state,
+                               const double             step_size,
+                               const StartExtrapolation extrapolation) const
   {
     if (n_changes < 2 || step_size != tau || previous_change_norm <= 0)
       return false;
     const double theta = std::min(last_change_norm / previous_change_norm, 1.);
-    // U: U_n + tanh(phi_n + theta dphi) - tanh(phi_n), which moves the
-    // interface as the last step did and leaves U_n where phi did not
-    // change (also where |U_n| >= 1)
+    if (extrapolation == StartExtrapolation::linear)
+      {
+        state.add(theta, last_change);
+        return true;
+      }
     Vector            &u    = state.block(0);
     const Vector       phi  = profile_variable(u);
     const double      *p    = phi.begin();
-    const double      *dp   = last_change.block(0).begin();
+    const double      *dp   = last_profile_change.block(0).begin();
     double            *uu   = u.begin();
     const unsigned int size = u.locally_owned_size();
     for (unsigned int i = 0; i < size; ++i)
@@ -74,7 +80,7 @@ namespace PhaseField
   {
     if (n_changes == 0)
       return {};
-    return {&last_change};
+    return {&last_change, &last_profile_change};
   }
 
 

@@ -278,7 +278,7 @@ namespace PhaseField
     if (!extrapolates())
       return;
     BlockVector extrapolated(state);
-    if (!predictor.predict(extrapolated, tau))
+    if (!predictor.predict(extrapolated, tau, scheme.start_extrapolation()))
       return;
     if (settings.verbose)
       pcout << "  step " << step

@@ -621,8 +621,13 @@ namespace PhaseField
      * result is kept.
      *
      * Where it is taken by the descent method (solves_by_descent()):
-     * always, with V and P of @p extrapolated re-solved for its U (the
-     * inner problem). Neither the residual nor the outer energy tells
+     * always, with U extrapolated in its profile variable
+     * (start_extrapolation(): the restored edge moves by several
+     * epsilon per step early on) and V and P re-solved for it (the inner
+     * problem). Newton's method keeps the linear extrapolation of all
+     * fields: U extrapolated in the profile variable and V linearly are
+     * not consistent in R_P (the level-5 cube of the test
+     * extrapolated_start lost its gain in steps 4 and 5). Neither the residual nor the outer energy tells
      * which start is nearer the minimiser: in the damaged circle at level
      * 9, step 4, the extrapolated start had the residual 49.6 against
      * 0.0295 and the outer energy 0.113703 against 0.112548 at the last
@@ -632,6 +637,9 @@ namespace PhaseField
      * the minimiser) and steep across the profile (a large gradient that
      * one Newton update removes).
      */
+    StartExtrapolation
+    start_extrapolation() const override;
+
     bool
     take_extrapolated_start(const BlockVector &old_state,
                             const BlockVector &last_result,

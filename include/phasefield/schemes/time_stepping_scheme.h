@@ -24,6 +24,27 @@ namespace PhaseField
    * SemiImplicitScheme (thesis section 5.2); create_time_stepping_scheme()
    * is the only place that chooses between them.
    */
+  /**
+   * How the start value of a step extrapolates the phase field U from the
+   * last two steps (StartValuePredictor; every other field linearly).
+   */
+  enum class StartExtrapolation
+  {
+    /** U_n + min(theta, 1) (U_n - U_(n-1)). */
+    linear,
+    /**
+     * In the profile variable phi = artanh(U) (the distance to the
+     * interface in units of its width, for U = tanh(d/eps)):
+     * U_n + tanh(phi_n + min(theta, 1) dphi) - tanh(phi_n), which moves the
+     * interface as the last step did even by several widths, where the
+     * linear extrapolation of two profiles is no profile; U_n stays where
+     * phi did not change.
+     */
+    profile
+  };
+
+
+
   template <int dim>
   class TimeSteppingScheme
   {
@@ -91,6 +112,15 @@ namespace PhaseField
     iterates_from_start_value() const
     {
       return false;
+    }
+
+    /**
+     * How StartValuePredictor extrapolates U for this scheme.
+     */
+    virtual StartExtrapolation
+    start_extrapolation() const
+    {
+      return StartExtrapolation::linear;
     }
 
     /**

@@ -3,6 +3,8 @@
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <phasefield/schemes/time_stepping_scheme.h>
+
 #include <vector>
 
 namespace PhaseField
@@ -17,7 +19,8 @@ namespace PhaseField
    *
    *   start of step n+1 = S_n + min(theta, 1) (S_n - S_(n-1))
    *
-   * for all fields S = (U, V, P, ...): the geometric series of the
+   * for all fields S = (U, V, P, ...) (U optionally in its profile
+   * variable, StartExtrapolation): the geometric series of the
    * changes, at most the linear extrapolation. Right after a fast
    * transient theta is small and the prediction stays near S_n, where the
    * linear one would overshoot (the level-8 cube, steps 3-5). It needs two
@@ -47,11 +50,13 @@ namespace PhaseField
     /**
      * If the history allows a prediction for a step of size @p tau,
      * overwrite @p state (the last result, the plain start) with the
-     * predicted start and return true; otherwise leave it and return
-     * false.
+     * predicted start, U extrapolated as @p extrapolation says, and
+     * return true; otherwise leave it and return false.
      */
     bool
-    predict(BlockVector &state, const double tau) const;
+    predict(BlockVector             &state,
+            const double             tau,
+            const StartExtrapolation extrapolation) const;
 
     /**
      * The vectors of the history, to be transferred to a new mesh with
@@ -67,6 +72,10 @@ namespace PhaseField
   private:
     /** S_n - S_(n-1), valid if n_changes > 0. */
     BlockVector last_change;
+    /**
+     * artanh(U_n) - artanh(U_(n-1)) (one block), valid if n_changes > 0.
+     */
+    BlockVector last_profile_change;
     /** |U_n - U_(n-1)| and |U_(n-1) - U_(n-2)| (l2 norms of the U block). */
     double last_change_norm     = 0;
     double previous_change_norm = 0;
