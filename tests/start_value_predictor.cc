@@ -22,10 +22,9 @@
 
 #include "tests.h"
 
+#include <cmath>
 #include <deal.II/base/index_set.h>
 #include <phasefield/time/start_value_predictor.h>
-
-#include <cmath>
 
 using namespace PhaseField;
 using BlockVector = StartValuePredictor::BlockVector;
@@ -51,12 +50,12 @@ namespace
 
   /** The prediction from @p last for a step of size @p tau, or "none". */
   void
-  print_prediction(const std::string         &label,
-                   const StartValuePredictor &predictor,
-                   const BlockVector         &last,
-                   const double               tau,
-                   const StartExtrapolation   extrapolation =
-                     StartExtrapolation::profile)
+  print_prediction(
+    const std::string         &label,
+    const StartValuePredictor &predictor,
+    const BlockVector         &last,
+    const double               tau,
+    const StartExtrapolation   extrapolation = StartExtrapolation::profile)
   {
     BlockVector start = last;
     Testing::log() << label << ": ";

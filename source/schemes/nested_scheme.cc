@@ -1135,8 +1135,8 @@ namespace PhaseField
                 << std::endl;
         return true;
       }
-    BlockVector  residual(last_result);
-    const auto   norm_at = [&](const BlockVector &start) {
+    BlockVector residual(last_result);
+    const auto  norm_at = [&](const BlockVector &start) {
       step.residual(start, residual);
       return step.residual_norm(residual);
     };

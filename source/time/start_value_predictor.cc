@@ -41,7 +41,7 @@ namespace PhaseField
     last_profile_change.block(0) = profile_variable(after.block(0));
     last_profile_change.block(0) -= profile_variable(before.block(0));
     last_profile_change.collect_sizes();
-    n_changes            = std::min(n_changes + 1, 2u);
+    n_changes = std::min(n_changes + 1, 2u);
   }
 
 

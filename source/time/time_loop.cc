@@ -425,8 +425,8 @@ namespace PhaseField
                                       double            &tau)
   {
     TimerOutput::Scope t(timer, "time step");
-    BlockVector  saved     = state;
-    unsigned int halvings = 0;
+    BlockVector        saved    = state;
+    unsigned int       halvings = 0;
     for (;;)
       {
         scheme.prepare_step(state, start_tau, tau);
@@ -449,9 +449,9 @@ namespace PhaseField
             continue;
           }
         state = saved;
-        AssertThrow(halvings < settings.max_step_halvings,
-                    ExcMessage(step_failure_message(
-                      scheme.name(), step, halvings, tau)));
+        AssertThrow(
+          halvings < settings.max_step_halvings,
+          ExcMessage(step_failure_message(scheme.name(), step, halvings, tau)));
         ++halvings;
         tau *= 0.5;
         pcout << "  step " << step << ": the solver of the " << scheme.name()

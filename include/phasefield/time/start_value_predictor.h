@@ -2,9 +2,7 @@
 #define phasefield_time_start_value_predictor_h
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
-
 #include <phasefield/schemes/time_stepping_scheme.h>
-
 #include <vector>
 
 namespace PhaseField
