@@ -1,21 +1,28 @@
 // StartValuePredictor, the extrapolated start value of a time step
 // (doc/willmore_flow.md, "Extrapolated start"), on states of two fields
-// (U, P) of two entries each. Expected values, derived by hand:
-// - states S_0 = (0 0 | 0 0), S_1 = (1 0 | 10 0), S_2 = (1.5 0 | 15 0),
-//   steps of size 0.1: theta = |dU_2| / |dU_1| = 0.5 / 1, and the start of
-//   step 3 is S_2 + 0.5 (0.5 0 | 5 0) = (1.75 0 | 17.5 0), P extrapolated
-//   with U's theta;
+// (U, P) of three entries each: U = (tanh(0 - c), tanh(1 - c), 1), a
+// profile whose interface is at c, and a node far from it (U = 1), P =
+// (p, 0, 0). Expected values, derived by hand (and a pocket calculator):
+// - c = 0, 0.4, 0.6 and p = 0, 10, 15, steps of size 0.1: theta =
+//   |dU_2| / |dU_1| = 0.5034 (l2 norms of the U changes), and the start
+//   of step 3 moves the interface as the last step did, by theta 0.2:
+//   U = tanh(x - 0.7007) = (-0.6048 0.2907 1), P = 15 + 5 theta = 17.517.
+//   The far node stays at 1 exactly. The linear extrapolation (Newton's
+//   method) gives U_2 + theta (U_2 - U_1) = (-0.6161 0.3009 1) instead;
 // - no prediction after one change only, for a step of another size, or
-//   after forget() (the mesh changed);
-// - growing changes (S_3 = S_2 + (0 1 | 0 0), |dU| = 1 > 0.5): theta is
-//   capped at 1, the linear extrapolation S_3 + (0 1 | 0 0) = (1.5 2 | 15
-//   0);
+//   after forget(); history() holds two vectors after a step (the change
+//   of all fields and that of the profile variable), none after
+//   forget();
+// - growing changes (c = 1.1: |dU_3| / |dU_2| = 2.46): theta is capped at
+//   1, U = tanh(x - 1.6) = (-0.9217 -0.5370 1), P = 15;
 // - a step of another size (0.05) starts the history anew: after it, one
-//   more step of that size is needed before a prediction;
+//   more step of that size is needed before a prediction (c = 1.1 -> 0.6,
+//   predicted c = 0.1: U = (-0.09967 0.7163 1));
 // - a stationary history (no change in the step before) predicts nothing.
 
 #include "tests.h"
 
+#include <cmath>
 #include <deal.II/base/index_set.h>
 #include <phasefield/time/start_value_predictor.h>
 
@@ -24,16 +31,17 @@ using BlockVector = StartValuePredictor::BlockVector;
 
 namespace
 {
+  /** The profile with its interface at @p c and P = (@p p, 0, 0). */
   BlockVector
-  state(const double u0, const double u1, const double p0, const double p1)
+  state(const double c, const double p)
   {
-    dealii::IndexSet all(2);
-    all.add_range(0, 2);
+    dealii::IndexSet all(3);
+    all.add_range(0, 3);
     BlockVector s(std::vector<dealii::IndexSet>{all, all}, MPI_COMM_WORLD);
-    s.block(0)[0] = u0;
-    s.block(0)[1] = u1;
-    s.block(1)[0] = p0;
-    s.block(1)[1] = p1;
+    s.block(0)[0] = std::tanh(0 - c);
+    s.block(0)[1] = std::tanh(1 - c);
+    s.block(0)[2] = 1;
+    s.block(1)[0] = p;
     s.compress(dealii::VectorOperation::insert);
     return s;
   }
@@ -42,18 +50,20 @@ namespace
 
   /** The prediction from @p last for a step of size @p tau, or "none". */
   void
-  print_prediction(const std::string         &label,
-                   const StartValuePredictor &predictor,
-                   const BlockVector         &last,
-                   const double               tau)
+  print_prediction(
+    const std::string         &label,
+    const StartValuePredictor &predictor,
+    const BlockVector         &last,
+    const double               tau,
+    const StartExtrapolation   extrapolation = StartExtrapolation::profile)
   {
     BlockVector start = last;
     Testing::log() << label << ": ";
-    if (!predictor.predict(start, tau))
+    if (!predictor.predict(start, tau, extrapolation))
       Testing::log() << "none" << std::endl;
     else
-      Testing::log() << start.block(0)[0] << ' ' << start.block(0)[1] << " | "
-                     << start.block(1)[0] << ' ' << start.block(1)[1]
+      Testing::log() << start.block(0)[0] << ' ' << start.block(0)[1] << ' '
+                     << start.block(0)[2] << " | " << start.block(1)[0]
                      << std::endl;
   }
 } // namespace
@@ -64,20 +74,25 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const BlockVector                        s0 = state(0, 0, 0, 0);
-  const BlockVector                        s1 = state(1, 0, 10, 0);
-  const BlockVector                        s2 = state(1.5, 0, 15, 0);
-  const BlockVector                        s3 = state(1.5, 1, 15, 0);
+  const BlockVector                        s0 = state(0, 0);
+  const BlockVector                        s1 = state(0.4, 10);
+  const BlockVector                        s2 = state(0.6, 15);
+  const BlockVector                        s3 = state(1.1, 15);
   StartValuePredictor                      predictor;
   predictor.record(s0, s1, 0.1);
   print_prediction("one change", predictor, s1, 0.1);
   predictor.record(s1, s2, 0.1);
   print_prediction("decaying changes", predictor, s2, 0.1);
+  print_prediction(
+    "decaying changes, linear", predictor, s2, 0.1, StartExtrapolation::linear);
   print_prediction("another step size", predictor, s2, 0.05);
   predictor.record(s2, s3, 0.1);
   print_prediction("growing changes", predictor, s3, 0.1);
+  Testing::log() << "history: " << predictor.history().size() << std::endl;
   predictor.forget();
   print_prediction("after forget", predictor, s3, 0.1);
+  Testing::log() << "history after forget: " << predictor.history().size()
+                 << std::endl;
 
   StartValuePredictor sizes;
   sizes.record(s0, s1, 0.1);

@@ -255,16 +255,30 @@ namespace PhaseField
                                             const double band_scale,
                                             const bool   use_margin)
   {
+    return adapt_to_phase_field(std::vector<BlockVector *>{&fields},
+                                band_scale,
+                                use_margin);
+  }
+
+
+
+  template <int dim>
+  bool
+  Discretization<dim>::adapt_to_phase_field(
+    const std::vector<BlockVector *> &fields,
+    const double                      band_scale,
+    const bool                        use_margin)
+  {
     const MeshParameters &mesh       = settings.mesh;
     const double          band_width = band_scale * mesh.band_width;
     if (!use_margin || mesh.band_margin <= 0)
-      return adapt_band_once({&fields}, band_width, mesh.coarsest_level);
+      return adapt_band_once(fields, band_width, mesh.coarsest_level);
     // finest cells are kept out to the coarsening band plus the margin
     const double margin      = band_scale * mesh.band_margin;
     const double outer_width = settings.coarsening_band_factor * band_width;
     const auto   fits        = [&](const double inner) {
       return NarrowBand::band_fits(dof_handler,
-                                   ghosted_copy(fields.block(0)),
+                                   ghosted_copy(fields[0]->block(0)),
                                    inner,
                                    outer_width + margin,
                                    mesh.finest_level);
@@ -279,7 +293,7 @@ namespace PhaseField
          level < mesh.finest_level && !fits(band_width);
          ++level)
       {
-        if (!adapt_band_once({&fields}, band_width, mesh.coarsest_level))
+        if (!adapt_band_once(fields, band_width, mesh.coarsest_level))
           break;
         changed = true;
       }

@@ -1104,17 +1104,58 @@ namespace PhaseField
 
 
   template <int dim>
-  double
-  NestedScheme<dim>::start_residual_norm(const BlockVector &old_state,
-                                         const BlockVector &state,
-                                         const double       tau) const
+  StartExtrapolation
+  NestedScheme<dim>::start_extrapolation() const
   {
-    const NestedStep<dim> step(discretization,
-                               coefficients(tau),
-                               old_state.block(Field::U));
-    BlockVector           residual(state);
-    step.residual(state, residual);
-    return step.residual_norm(residual);
+    return solves_by_descent() ? StartExtrapolation::profile :
+                                 StartExtrapolation::linear;
+  }
+
+
+
+  template <int dim>
+  bool
+  NestedScheme<dim>::take_extrapolated_start(const BlockVector &old_state,
+                                             const BlockVector &last_result,
+                                             BlockVector       &extrapolated,
+                                             const double       tau) const
+  {
+    NestedStep<dim> step(discretization,
+                         coefficients(tau),
+                         old_state.block(Field::U));
+    if (solves_by_descent())
+      {
+        const std::unique_ptr<LinearSolver> solver =
+          make_solver(linear_solver->type());
+        step.solve_inner_problem(extrapolated,
+                                 *solver,
+                                 NestedStep<dim>::inner_tolerance);
+        if (settings.verbose)
+          pcout << "    descent method: U extrapolated, V and P re-solved"
+                << std::endl;
+        return true;
+      }
+    BlockVector residual(last_result);
+    const auto  norm_at = [&](const BlockVector &start) {
+      step.residual(start, residual);
+      return step.residual_norm(residual);
+    };
+    const double last_norm         = norm_at(last_result);
+    const double extrapolated_norm = norm_at(extrapolated);
+    if (settings.verbose)
+      pcout << "    residual " << extrapolated_norm
+            << " at the extrapolated start, " << last_norm
+            << " at the last result" << std::endl;
+    return extrapolated_norm < last_norm;
+  }
+
+
+
+  template <int dim>
+  bool
+  NestedScheme<dim>::solves_by_descent() const
+  {
+    return settings.outer_energy.fixed_u != nullptr;
   }
 
 
@@ -1144,7 +1185,7 @@ namespace PhaseField
     // user time).
     const bool first_step  = first_step_from_initial_data;
     const bool restoration = settings.outer_energy.has_restoration_terms();
-    if (settings.outer_energy.fixed_u != nullptr || (first_step && restoration))
+    if (solves_by_descent() || (first_step && restoration))
       return descent_solve(step, state, control);
     const BlockVector start(state);
     const StepReport  newton = newton_solve(

@@ -272,24 +272,25 @@ namespace PhaseField
   void
   TimeLoop<dim>::predict_start_value(const unsigned int step,
                                      BlockVector       &state,
-                                     const double       tau) const
+                                     const double       tau)
   {
+    extrapolated_start = false;
     if (!extrapolates())
       return;
     BlockVector extrapolated(state);
-    if (!predictor.predict(extrapolated, tau))
+    if (!predictor.predict(extrapolated, tau, scheme.start_extrapolation()))
       return;
-    const double plain_norm = scheme.start_residual_norm(old_state, state, tau);
-    const double extrapolated_norm =
-      scheme.start_residual_norm(old_state, extrapolated, tau);
-    const bool better = extrapolated_norm < plain_norm;
-    if (better)
+    if (settings.verbose)
+      pcout << "  step " << step
+            << ": a start extrapolated from the last two steps" << std::endl;
+    extrapolated_start =
+      scheme.take_extrapolated_start(old_state, state, extrapolated, tau);
+    if (extrapolated_start)
       state.swap(extrapolated);
     if (settings.verbose)
-      pcout << "  step " << step << ": residual " << extrapolated_norm
-            << " at the start extrapolated from the last two steps, "
-            << plain_norm << " at the last result: "
-            << (better ? "extrapolated" : "last result") << std::endl;
+      pcout << "  step " << step << " starts from "
+            << (extrapolated_start ? "the extrapolation" : "the last result")
+            << std::endl;
   }
 
 
@@ -372,13 +373,34 @@ namespace PhaseField
   TimeLoop<dim>::refine_to_band(BlockVector &state, const double tau)
   {
     TimerOutput::Scope t(timer, "mesh: adapt");
-    if (!discretization.refine_to_band({&state, &old_state}))
+    if (!discretization.refine_to_band(with_history({&state, &old_state})))
       return;
-    predictor.forget();
+    distribute_history_constraints();
     // old_state last: a scheme may keep data of the start of the step
     // (the semi-implicit scheme's F(U^k))
     restore_after_transfer(state, tau);
     restore_after_transfer(old_state, state_tau);
+  }
+
+
+
+  template <int dim>
+  std::vector<typename TimeLoop<dim>::BlockVector *>
+  TimeLoop<dim>::with_history(std::vector<BlockVector *> fields)
+  {
+    for (BlockVector *v : predictor.history())
+      fields.push_back(v);
+    return fields;
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::distribute_history_constraints()
+  {
+    for (BlockVector *v : predictor.history())
+      discretization.distribute_constraints(*v);
   }
 
 
@@ -403,17 +425,34 @@ namespace PhaseField
                                       double            &tau)
   {
     TimerOutput::Scope t(timer, "time step");
-    const BlockVector  saved = state;
-    for (unsigned int attempt = 0;; ++attempt)
+    BlockVector        saved    = state;
+    unsigned int       halvings = 0;
+    for (;;)
       {
         scheme.prepare_step(state, start_tau, tau);
         const StepReport report = client.advance(scheme, old_state, state, tau);
+        const bool       from_extrapolation = extrapolated_start;
+        extrapolated_start                  = false;
         if (report.converged)
           return report;
+        if (from_extrapolation)
+          {
+            // the extrapolation is for this tau: the same step from the
+            // last result (old_state), then halvings from there
+            saved = old_state;
+            state = old_state;
+            pcout << "  step " << step << ": the solver of the "
+                  << scheme.name()
+                  << " scheme did not converge from the extrapolated start, "
+                     "retrying from the last result"
+                  << std::endl;
+            continue;
+          }
         state = saved;
-        AssertThrow(attempt < settings.max_step_halvings,
-                    ExcMessage(
-                      step_failure_message(scheme.name(), step, attempt, tau)));
+        AssertThrow(
+          halvings < settings.max_step_halvings,
+          ExcMessage(step_failure_message(scheme.name(), step, halvings, tau)));
+        ++halvings;
         tau *= 0.5;
         pcout << "  step " << step << ": the solver of the " << scheme.name()
               << " scheme did not converge, retrying with half the time "
@@ -459,9 +498,9 @@ namespace PhaseField
     TimerOutput::Scope t(timer, "mesh: adapt");
     const bool   report_energy = settings.verbose && scheme.has_energy_law();
     const double before = report_energy ? scheme.energy_law_energy(state) : 0.;
-    if (!discretization.adapt_to_phase_field(state, 1., true))
+    if (!discretization.adapt_to_phase_field(with_history({&state}), 1., true))
       return;
-    predictor.forget();
+    distribute_history_constraints();
     discretization.reinit(old_state, state.n_blocks());
     restore_after_transfer(state, state_tau);
     if (report_energy)

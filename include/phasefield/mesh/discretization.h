@@ -96,6 +96,15 @@ namespace PhaseField
                          const bool   use_margin = false);
 
     /**
+     * adapt_to_phase_field() for the phase field in block 0 of the first
+     * of @p fields, transferring all blocks of all of them.
+     */
+    bool
+    adapt_to_phase_field(const std::vector<BlockVector *> &fields,
+                         const double                      band_scale,
+                         const bool                        use_margin);
+
+    /**
      * Whether the band of the phase field in block 0 of @p fields,
      * narrowed by `Mesh / Band margin`, lies on the finest level: whether
      * the current mesh resolves @p fields as a re-meshing would leave it

@@ -24,6 +24,27 @@ namespace PhaseField
    * SemiImplicitScheme (thesis section 5.2); create_time_stepping_scheme()
    * is the only place that chooses between them.
    */
+  /**
+   * How the start value of a step extrapolates the phase field U from the
+   * last two steps (StartValuePredictor; every other field linearly).
+   */
+  enum class StartExtrapolation
+  {
+    /** U_n + min(theta, 1) (U_n - U_(n-1)). */
+    linear,
+    /**
+     * In the profile variable phi = artanh(U) (the distance to the
+     * interface in units of its width, for U = tanh(d/eps)):
+     * U_n + tanh(phi_n + min(theta, 1) dphi) - tanh(phi_n), which moves the
+     * interface as the last step did even by several widths, where the
+     * linear extrapolation of two profiles is no profile; U_n stays where
+     * phi did not change.
+     */
+    profile
+  };
+
+
+
   template <int dim>
   class TimeSteppingScheme
   {
@@ -94,21 +115,34 @@ namespace PhaseField
     }
 
     /**
-     * The norm in which the iteration of advance() measures convergence,
-     * of the residual of the step of size @p tau from @p old_state at the
-     * start value @p state: of two start values the one with the smaller
-     * norm is taken. Only for a scheme that iterates_from_start_value().
+     * How StartValuePredictor extrapolates U for this scheme.
      */
-    virtual double
-    start_residual_norm(const BlockVector &old_state,
-                        const BlockVector &state,
-                        const double       tau) const
+    virtual StartExtrapolation
+    start_extrapolation() const
+    {
+      return StartExtrapolation::linear;
+    }
+
+    /**
+     * Should the step of size @p tau from @p old_state start from
+     * @p extrapolated (StartValuePredictor's extrapolation, which the
+     * scheme may complete, e.g. by re-solving fields that depend on
+     * others) rather than from @p last_result? Prints its reasons with
+     * `Output / Verbose`. Only for a scheme that
+     * iterates_from_start_value().
+     */
+    virtual bool
+    take_extrapolated_start(const BlockVector &old_state,
+                            const BlockVector &last_result,
+                            BlockVector       &extrapolated,
+                            const double       tau) const
     {
       (void)old_state;
-      (void)state;
+      (void)last_result;
+      (void)extrapolated;
       (void)tau;
       AssertThrow(false, dealii::ExcNotImplemented());
-      return 0;
+      return false;
     }
 
     /**

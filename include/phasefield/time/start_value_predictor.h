@@ -2,6 +2,8 @@
 #define phasefield_time_start_value_predictor_h
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/schemes/time_stepping_scheme.h>
+#include <vector>
 
 namespace PhaseField
 {
@@ -15,19 +17,24 @@ namespace PhaseField
    *
    *   start of step n+1 = S_n + min(theta, 1) (S_n - S_(n-1))
    *
-   * for all fields S = (U, V, P, ...): the geometric series of the
+   * for all fields S = (U, V, P, ...) (U optionally in its profile
+   * variable, StartExtrapolation): the geometric series of the
    * changes, at most the linear extrapolation. Right after a fast
    * transient theta is small and the prediction stays near S_n, where the
    * linear one would overshoot (the level-8 cube, steps 3-5). It needs two
-   * changes of the same step size on the same mesh: forget() after
-   * every change of the mesh (re-meshing, a checkpoint's reload in p4est
-   * order), and a step of another size starts the history anew. Only
-   * the start of the iteration changes, not the step solved.
+   * changes of the same step size: a step of another size starts the
+   * history anew. A change of the mesh transfers the history with the
+   * state (history()); forget() where the DoFs change without a
+   * transfer (a checkpoint's reload in p4est order). The norms of the
+   * changes are taken on the meshes of their steps: the changes lie in
+   * the band of finest cells, whose nodal density a re-meshing keeps.
+   * Only the start of the iteration changes, not the step solved.
    */
   class StartValuePredictor
   {
   public:
     using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
 
     /**
      * Record the step of size @p tau from @p before to @p after (both on
@@ -41,19 +48,32 @@ namespace PhaseField
     /**
      * If the history allows a prediction for a step of size @p tau,
      * overwrite @p state (the last result, the plain start) with the
-     * predicted start and return true; otherwise leave it and return
-     * false.
+     * predicted start, U extrapolated as @p extrapolation says, and
+     * return true; otherwise leave it and return false.
      */
     bool
-    predict(BlockVector &state, const double tau) const;
+    predict(BlockVector             &state,
+            const double             tau,
+            const StartExtrapolation extrapolation) const;
 
-    /** Drop the history (the mesh changed). */
+    /**
+     * The vectors of the history, to be transferred to a new mesh with
+     * the state (empty without a history).
+     */
+    std::vector<BlockVector *>
+    history();
+
+    /** Drop the history (the DoFs changed without a transfer). */
     void
     forget();
 
   private:
     /** S_n - S_(n-1), valid if n_changes > 0. */
     BlockVector last_change;
+    /**
+     * artanh(U_n) - artanh(U_(n-1)) (one block), valid if n_changes > 0.
+     */
+    BlockVector last_profile_change;
     /** |U_n - U_(n-1)| and |U_(n-1) - U_(n-2)| (l2 norms of the U block). */
     double last_change_norm     = 0;
     double previous_change_norm = 0;

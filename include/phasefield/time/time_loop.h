@@ -249,16 +249,14 @@ namespace PhaseField
     /**
      * Replace the start value @p state of step @p step, of size @p tau (the
      * last result), by the predictor's extrapolation where the settings
-     * and the scheme ask for it, the history allows it and the residual
-     * of the step is smaller there (TimeSteppingScheme::
-     * start_residual_norm(): the extrapolation of all fields is not
-     * consistent in the stiff inner equations; the 2D quarter circle's
-     * residual is 8x larger there).
+     * and the scheme ask for it, the history allows it and the scheme
+     * takes it (TimeSteppingScheme::take_extrapolated_start()); sets
+     * extrapolated_start.
      */
     void
     predict_start_value(const unsigned int step,
                         BlockVector       &state,
-                        const double       tau) const;
+                        const double       tau);
 
     /**
      * Do steps start from the predictor's extrapolation (settings and
@@ -348,6 +346,17 @@ namespace PhaseField
     restore_after_transfer(BlockVector &fields, const double tau);
 
     /**
+     * @p fields and the vectors of the predictor's history: what a change
+     * of the mesh transfers.
+     */
+    std::vector<BlockVector *>
+    with_history(std::vector<BlockVector *> fields);
+
+    /** Distribute the constraints in the transferred history. */
+    void
+    distribute_history_constraints();
+
+    /**
      * Thesis Cor. 3.3: on a fixed mesh the minimiser of the outer energy
      * satisfies E^{k+1} + dissipation <= E^k; warn if the step found
      * another critical point.
@@ -419,8 +428,15 @@ namespace PhaseField
      */
     double      step_size_limit = 0;
     BlockVector old_state;
-    /** The history of the steps on the current mesh (if extrapolates()). */
+    /** The history of the last steps (if extrapolates()). */
     StartValuePredictor predictor;
+
+    /**
+     * Does the current attempt of the step start from the predictor's
+     * extrapolation? If it fails, the step is tried from the last result
+     * before it is halved.
+     */
+    bool extrapolated_start = false;
   };
 } // namespace PhaseField
 
