@@ -9,9 +9,9 @@
 //   U = tanh(x - 0.7007) = (-0.6048 0.2907 1), P = 15 + 5 theta = 17.517.
 //   The far node stays at 1 exactly. The linear extrapolation (Newton's
 //   method) gives U_2 + theta (U_2 - U_1) = (-0.6161 0.3009 1) instead;
-// - no prediction after one change only, for a step of another size, or
-//   after forget(); history() holds two vectors after a step (the change
-//   of all fields and that of the profile variable), none after
+// - no prediction after one change only, for a step of another size,
+//   after forget(), or after the first change recorded for another
+//   extrapolation; history() holds one vector after a step, none after
 //   forget();
 // - growing changes (c = 1.1: |dU_3| / |dU_2| = 2.46): theta is capped at
 //   1, U = tanh(x - 1.6) = (-0.9217 -0.5370 1), P = 15;
@@ -50,16 +50,14 @@ namespace
 
   /** The prediction from @p last for a step of size @p tau, or "none". */
   void
-  print_prediction(
-    const std::string         &label,
-    const StartValuePredictor &predictor,
-    const BlockVector         &last,
-    const double               tau,
-    const StartExtrapolation   extrapolation = StartExtrapolation::profile)
+  print_prediction(const std::string         &label,
+                   const StartValuePredictor &predictor,
+                   const BlockVector         &last,
+                   const double               tau)
   {
     BlockVector start = last;
     Testing::log() << label << ": ";
-    if (!predictor.predict(start, tau, extrapolation))
+    if (!predictor.predict(start, tau))
       Testing::log() << "none" << std::endl;
     else
       Testing::log() << start.block(0)[0] << ' ' << start.block(0)[1] << ' '
@@ -78,15 +76,15 @@ main(int argc, char **argv)
   const BlockVector                        s1 = state(0.4, 10);
   const BlockVector                        s2 = state(0.6, 15);
   const BlockVector                        s3 = state(1.1, 15);
-  StartValuePredictor                      predictor;
-  predictor.record(s0, s1, 0.1);
+  constexpr auto      profile                 = StartExtrapolation::profile;
+  constexpr auto      linear                  = StartExtrapolation::linear;
+  StartValuePredictor predictor;
+  predictor.record(s0, s1, 0.1, profile);
   print_prediction("one change", predictor, s1, 0.1);
-  predictor.record(s1, s2, 0.1);
+  predictor.record(s1, s2, 0.1, profile);
   print_prediction("decaying changes", predictor, s2, 0.1);
-  print_prediction(
-    "decaying changes, linear", predictor, s2, 0.1, StartExtrapolation::linear);
   print_prediction("another step size", predictor, s2, 0.05);
-  predictor.record(s2, s3, 0.1);
+  predictor.record(s2, s3, 0.1, profile);
   print_prediction("growing changes", predictor, s3, 0.1);
   Testing::log() << "history: " << predictor.history().size() << std::endl;
   predictor.forget();
@@ -94,16 +92,26 @@ main(int argc, char **argv)
   Testing::log() << "history after forget: " << predictor.history().size()
                  << std::endl;
 
+  StartValuePredictor linear_predictor;
+  linear_predictor.record(s0, s1, 0.1, linear);
+  linear_predictor.record(s1, s2, 0.1, linear);
+  print_prediction("decaying changes, linear", linear_predictor, s2, 0.1);
+  linear_predictor.record(s2, s3, 0.1, profile);
+  print_prediction("first step of another extrapolation",
+                   linear_predictor,
+                   s3,
+                   0.1);
+
   StartValuePredictor sizes;
-  sizes.record(s0, s1, 0.1);
-  sizes.record(s1, s2, 0.1);
-  sizes.record(s2, s3, 0.05);
+  sizes.record(s0, s1, 0.1, profile);
+  sizes.record(s1, s2, 0.1, profile);
+  sizes.record(s2, s3, 0.05, profile);
   print_prediction("first step of a new size", sizes, s3, 0.05);
-  sizes.record(s3, s2, 0.05);
+  sizes.record(s3, s2, 0.05, profile);
   print_prediction("second step of it", sizes, s2, 0.05);
 
   StartValuePredictor stationary;
-  stationary.record(s1, s1, 0.1);
-  stationary.record(s1, s2, 0.1);
+  stationary.record(s1, s1, 0.1, profile);
+  stationary.record(s1, s2, 0.1, profile);
   print_prediction("after a step without change", stationary, s2, 0.1);
 }

@@ -26,30 +26,31 @@ namespace PhaseField
 
 
   void
-  StartValuePredictor::record(const BlockVector &before,
-                              const BlockVector &after,
-                              const double       step_size)
+  StartValuePredictor::record(const BlockVector       &before,
+                              const BlockVector       &after,
+                              const double             step_size,
+                              const StartExtrapolation how)
   {
-    if (n_changes > 0 && step_size != tau)
+    if (n_changes > 0 && (step_size != tau || how != extrapolation))
       n_changes = 0;
-    tau         = step_size;
-    last_change = after;
+    tau           = step_size;
+    extrapolation = how;
+    last_change   = after;
     last_change -= before;
     previous_change_norm = last_change_norm;
     last_change_norm     = last_change.block(0).l2_norm();
-    last_profile_change.reinit(1);
-    last_profile_change.block(0) = profile_variable(after.block(0));
-    last_profile_change.block(0) -= profile_variable(before.block(0));
-    last_profile_change.collect_sizes();
+    if (extrapolation == StartExtrapolation::profile)
+      {
+        last_change.block(0) = profile_variable(after.block(0));
+        last_change.block(0) -= profile_variable(before.block(0));
+      }
     n_changes = std::min(n_changes + 1, 2u);
   }
 
 
 
   bool
-  StartValuePredictor::predict(BlockVector             &state,
-                               const double             step_size,
-                               const StartExtrapolation extrapolation) const
+  StartValuePredictor::predict(BlockVector &state, const double step_size) const
   {
     if (n_changes < 2 || step_size != tau || previous_change_norm <= 0)
       return false;
@@ -62,7 +63,7 @@ namespace PhaseField
     Vector            &u    = state.block(0);
     const Vector       phi  = profile_variable(u);
     const double      *p    = phi.begin();
-    const double      *dp   = last_profile_change.block(0).begin();
+    const double      *dp   = last_change.block(0).begin();
     double            *uu   = u.begin();
     const unsigned int size = u.locally_owned_size();
     for (unsigned int i = 0; i < size; ++i)
@@ -80,7 +81,7 @@ namespace PhaseField
   {
     if (n_changes == 0)
       return {};
-    return {&last_change, &last_profile_change};
+    return {&last_change};
   }
 
 

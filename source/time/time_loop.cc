@@ -224,7 +224,7 @@ namespace PhaseField
         double           tau    = tried_tau;
         const StepReport report = advance_on_resolving_mesh(step, state, tau);
         if (extrapolates())
-          predictor.record(old_state, state, tau);
+          predictor.record(old_state, state, tau, scheme.start_extrapolation());
         if (settings.regrow_step_size)
           step_size_limit = tau < tried_tau ? tau : 2 * tau;
         // on the mesh of the step, which the step may have refined
@@ -278,7 +278,7 @@ namespace PhaseField
     if (!extrapolates())
       return;
     BlockVector extrapolated(state);
-    if (!predictor.predict(extrapolated, tau, scheme.start_extrapolation()))
+    if (!predictor.predict(extrapolated, tau))
       return;
     if (settings.verbose)
       pcout << "  step " << step

@@ -38,23 +38,23 @@ namespace PhaseField
 
     /**
      * Record the step of size @p tau from @p before to @p after (both on
-     * the current mesh).
+     * the current mesh); the next prediction extrapolates U as @p how
+     * says (a change of it starts the history anew).
      */
     void
-    record(const BlockVector &before,
-           const BlockVector &after,
-           const double       tau);
+    record(const BlockVector       &before,
+           const BlockVector       &after,
+           const double             tau,
+           const StartExtrapolation how);
 
     /**
      * If the history allows a prediction for a step of size @p tau,
      * overwrite @p state (the last result, the plain start) with the
-     * predicted start, U extrapolated as @p extrapolation says, and
-     * return true; otherwise leave it and return false.
+     * predicted start and return true; otherwise leave it and return
+     * false.
      */
     bool
-    predict(BlockVector             &state,
-            const double             tau,
-            const StartExtrapolation extrapolation) const;
+    predict(BlockVector &state, const double tau) const;
 
     /**
      * The vectors of the history, to be transferred to a new mesh with
@@ -68,12 +68,13 @@ namespace PhaseField
     forget();
 
   private:
-    /** S_n - S_(n-1), valid if n_changes > 0. */
-    BlockVector last_change;
     /**
-     * artanh(U_n) - artanh(U_(n-1)) (one block), valid if n_changes > 0.
+     * S_n - S_(n-1), valid if n_changes > 0; its U block is
+     * artanh(U_n) - artanh(U_(n-1)) for StartExtrapolation::profile.
      */
-    BlockVector last_profile_change;
+    BlockVector last_change;
+    /** How U is extrapolated. */
+    StartExtrapolation extrapolation = StartExtrapolation::linear;
     /** |U_n - U_(n-1)| and |U_(n-1) - U_(n-2)| (l2 norms of the U block). */
     double last_change_norm     = 0;
     double previous_change_norm = 0;
