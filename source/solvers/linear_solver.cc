@@ -279,12 +279,14 @@ namespace PhaseField
   unsigned int
   LinearSolver::kept_iteration_limit() const
   {
-    // a tighter tolerance needs proportionally more iterations, a looser
-    // one is not credited (the first iterations reduce the residual less
-    // than later ones)
-    const double decades = -std::log10(tolerance);
+    // a tighter tolerance needs proportionally more iterations per decade
+    // beyond the first half, a looser one is not credited
+    const double fresh_decades = fresh_solve.decades - free_start_decades;
+    if (fresh_decades <= 0)
+      return max_iterations;
+    const double decades = -std::log10(tolerance) - free_start_decades;
     const double expected =
-      fresh_solve.iterations * std::max(1., decades / fresh_solve.decades);
+      fresh_solve.iterations * std::max(1., decades / fresh_decades);
     return std::min<unsigned int>(max_iterations,
                                   std::max(1.,
                                            multigrid_reuse_factor * expected));

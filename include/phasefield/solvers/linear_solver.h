@@ -57,13 +57,30 @@ namespace PhaseField
      * while the interface has not moved (interface_mode_tolerance), and a
      * solve with them may take this factor times the iterations of the
      * first solve after their set-up (scaled up by the ratio of the
-     * tolerances in decades where the later one is tighter); beyond, the
+     * tolerances in decades beyond free_start_decades where the later one
+     * is tighter); beyond, the
      * hierarchy is set up anew and the solve repeated. The set-up
      * (aggregation and Galerkin products) was a fifth of the time of the
      * 3D sphere at level 6 (doc/benchmarks.md, "Keeping the multigrid
      * hierarchy").
      */
     static constexpr double multigrid_reuse_factor = 1.5;
+
+    /**
+     * The decades of residual reduction that a preconditioned CG solve
+     * from zero gains at almost no cost, for the iteration model of the
+     * kept hierarchies: a solve to D decades takes about r (D - 0.5)
+     * iterations. First step of the 3D sphere (eps = 4h, tau = 0.03h,
+     * 2 ranks), iterations per decade with a new hierarchy: level 7 4 for 1
+     * decade, 32 for 4.7, 35-41 for 6 (per decade beyond the first half:
+     * 8, 7.6, 6.4-7.5); level 6: 2 for 1, 16-17 for 3.4-3.7, 26-27 for 6
+     * (4, 5.3-5.5, 4.7-4.9). Counted in whole decades, the loose first
+     * solve of a Newton method (one decade, ForcingTerm::max_forcing)
+     * promised 4 per decade at level 7, and the kept hierarchy was given
+     * up in the next tight solve of every first step (level 7: 28 of 95
+     * CG iterations spent on the abandoned solve).
+     */
+    static constexpr double free_start_decades = 0.5;
 
     /**
      * Largest change of the interface mode 1 - V^2 (SchurPreconditioner)
@@ -275,8 +292,9 @@ namespace PhaseField
     /**
      * Iterations allowed to a solve with a kept SchurPreconditioner:
      * multigrid_reuse_factor times those of the first solve after its
-     * set-up, scaled up by the ratio of the tolerances in decades where
-     * this one is tighter.
+     * set-up, scaled up by the ratio of the tolerances in decades beyond
+     * free_start_decades where this one is tighter; the iteration limit
+     * if the first solve asked for no more than free_start_decades.
      */
     unsigned int
     kept_iteration_limit() const;
