@@ -58,8 +58,8 @@ namespace PhaseField
      * solve with them may take this factor times the iterations of the
      * first solve after their set-up (scaled up by the ratio of the
      * tolerances in decades beyond free_start_decades where the later one
-     * is tighter); beyond, the
-     * hierarchy is set up anew and the solve repeated. The set-up
+     * is tighter); beyond, the hierarchy is set up anew and the solve
+     * repeated. The set-up
      * (aggregation and Galerkin products) was a fifth of the time of the
      * 3D sphere at level 6 (doc/benchmarks.md, "Keeping the multigrid
      * hierarchy").
@@ -71,11 +71,12 @@ namespace PhaseField
      * from zero gains at almost no cost, for the iteration model of the
      * kept hierarchies: a solve to D decades takes about r (D - 0.5)
      * iterations. First step of the 3D sphere (eps = 4h, tau = 0.03h,
-     * 2 ranks), iterations per decade with a new hierarchy: level 7 4 for 1
-     * decade, 32 for 4.7, 35-41 for 6 (per decade beyond the first half:
-     * 8, 7.6, 6.4-7.5); level 6: 2 for 1, 16-17 for 3.4-3.7, 26-27 for 6
-     * (4, 5.3-5.5, 4.7-4.9). Counted in whole decades, the loose first
-     * solve of a Newton method (one decade, ForcingTerm::max_forcing)
+     * 2 ranks), iterations per decade: level 7 4 for 1 decade, 32 for
+     * 4.7, 35-41 for 6 (per decade beyond the first half: 8, 7.6,
+     * 6.4-7.5); level 6: 2 for 1, 16-17 for 3.4-3.7 (with the hierarchy of
+     * the previous Newton iteration), 26-27 for 6 (4, 5.3-5.5, 4.7-4.9);
+     * the others with a new hierarchy. Counted in whole decades, the loose
+     * first solve of a Newton method (one decade, ForcingTerm::max_forcing)
      * promised 4 per decade at level 7, and the kept hierarchy was given
      * up in the next tight solve of every first step (level 7: 28 of 95
      * CG iterations spent on the abandoned solve).
