@@ -41,13 +41,14 @@ namespace PhaseField
   initialize_multigrid(
     dealii::TrilinosWrappers::PreconditionAMG   &multigrid,
     const Epetra_RowMatrix                      &matrix,
-    const dealii::TrilinosWrappers::MPI::Vector *interface_mode)
+    const dealii::TrilinosWrappers::MPI::Vector *interface_mode,
+    const unsigned int                           smoother_sweeps)
   {
     assert_positive_diagonal(matrix);
     dealii::TrilinosWrappers::PreconditionAMG::AdditionalData settings;
     settings.elliptic              = true;
     settings.higher_order_elements = false;
-    settings.smoother_sweeps       = 3;
+    settings.smoother_sweeps       = smoother_sweeps;
     settings.aggregation_threshold = 0.02;
     // the coarse size is not in AdditionalData: set it in ML's list
     Teuchos::ParameterList              parameters;

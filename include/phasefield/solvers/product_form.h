@@ -11,7 +11,7 @@
  * S = diag(d) + w Khat M^-1 Khat with a sparse second-order matrix Khat
  * and a diagonal M (LinearSolver::solve_product_form()): S is applied
  * without being assembled, and preconditioned by G^-1 M G^-1 with one
- * algebraic multigrid cycle for each G^-1.
+ * algebraic multigrid cycle (schur_smoother_sweeps) for each G^-1.
  */
 namespace PhaseField
 {
@@ -26,11 +26,33 @@ namespace PhaseField
   constexpr unsigned int multigrid_coarse_size = 200;
 
   /**
+   * Chebyshev sweeps (the smoother's polynomial degree) per level, before
+   * and after the coarse correction, of a multigrid cycle that stands for
+   * G^-1 in a CG solve with G (measured on the 3D cube: two sweeps need
+   * twice the CG iterations, more than three do not pay).
+   */
+  constexpr unsigned int multigrid_smoother_sweeps = 3;
+
+  /**
+   * Chebyshev sweeps of the cycles inside the product G^-1 M G^-1
+   * (SchurPreconditioner). There the cycle's error matters in the norm of
+   * M, not of G: a cycle B with I - BG small in the G-norm can be far
+   * from G^-1 in the M-norm, by up to the square root of the condition
+   * number of M^-1 G, which grows with the level. Smoothing reduces this
+   * part of the error. Measured on the sphere's first step (r = 0.35,
+   * eps = 4h, tau = 0.03h, ttau = h^2, 2 ranks), CG iterations to 1e-6 of
+   * Newton systems 1-3 at levels 6 / 7 / 8: 3 sweeps 26-27 / 35-41 /
+   * 67-68; 5 sweeps 23-25 / 28-30 / 40-46; 6 sweeps - / 27-30 / 37-43;
+   * 8 sweeps - / 27-29 / 35-39, at about the same time per solve for 3, 5
+   * and 6 (doc/benchmarks.md, "Smoothing inside the product").
+   */
+  constexpr unsigned int schur_smoother_sweeps = 6;
+
+  /**
    * Set up the algebraic multigrid cycles (Trilinos ML) of the iterative
    * solvers for @p matrix: aggregation for a scalar second-order
-   * operator, three Chebyshev sweeps per level (measured on the 3D cube:
-   * two sweeps need twice the CG iterations, more than three do not pay),
-   * a coarsest level of at most multigrid_coarse_size unknowns.
+   * operator, @p smoother_sweeps Chebyshev sweeps per level, a coarsest
+   * level of at most multigrid_coarse_size unknowns.
    *
    * The near null space that the aggregation keeps on the coarse levels
    * is the constant vector, and with @p interface_mode (locally owned
@@ -42,7 +64,8 @@ namespace PhaseField
   initialize_multigrid(
     dealii::TrilinosWrappers::PreconditionAMG   &multigrid,
     const Epetra_RowMatrix                      &matrix,
-    const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr);
+    const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr,
+    const unsigned int smoother_sweeps = multigrid_smoother_sweeps);
 
 
 
@@ -128,7 +151,7 @@ namespace PhaseField
       : mass(mass)
       , tmp(mass)
     {
-      initialize_multigrid(multigrid, g, interface_mode);
+      initialize_multigrid(multigrid, g, interface_mode, schur_smoother_sweeps);
     }
 
     void
