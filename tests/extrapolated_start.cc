@@ -1,20 +1,20 @@
 // The extrapolated start value in the time loop (doc/willmore_flow.md,
 // "Extrapolated start"): the cube of cube.prm at level 5 (eps = 4h, tau =
 // 0.03h, 8 steps, iterative solver) with the default `Time stepping /
-// Extrapolated start = true` and with false. Measured on 2 ranks (2026-11-28, with the verbose
-// log): from step 3 on the start is chosen by the residual of the step;
-// the extrapolated one is smaller in steps 4 and 5 (0.00818 against
+// Extrapolated start = true` and with false. Measured on 2 ranks (2026-11-28,
+// with the verbose log): from step 3 on the start is chosen by the residual of
+// the step; the extrapolated one is smaller in steps 4 and 5 (0.00818 against
 // 0.00993, 0.0121 against 0.0127), which then take 3 Newton iterations
 // instead of 5; in steps 3 and 6-8 the last result is kept and the
 // iterations are those of the run without. (The Newton counts are those
 // of the 6-sweep multigrid cycles of 2026-11-28, second change; with 3
-// sweeps steps 4 and 5 took 4 instead of 5, and step 1 9 instead of 12.) Both runs solve the same steps
-// to the Newton tolerance: the energies and inside measures agree to the
-// printed digits, and the check below asks for agreement to 1e-7 relative.
-// A predictor that is never used, or a start that is taken although its
-// residual is larger, changes the Newton columns. (At level 5 epsilon is
-// a third of the edge and the cube shrinks fast: a test of the choice of
-// the start, not of the flow.)
+// sweeps steps 4 and 5 took 4 instead of 5, and step 1 9 instead of 12.) Both
+// runs solve the same steps to the Newton tolerance: the energies and inside
+// measures agree to the printed digits, and the check below asks for agreement
+// to 1e-7 relative. A predictor that is never used, or a start that is taken
+// although its residual is larger, changes the Newton columns. (At level 5
+// epsilon is a third of the edge and the cube shrinks fast: a test of the
+// choice of the start, not of the flow.)
 
 #include "tests.h"
 
