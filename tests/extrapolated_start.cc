@@ -8,7 +8,8 @@
 // instead of 5; in steps 3 and 6-8 the last result is kept and the
 // iterations are those of the run without. (The Newton counts are those
 // of the 6-sweep multigrid cycles of 2026-11-28, second change; with 3
-// sweeps steps 4 and 5 took 4 instead of 5, and step 1 9 instead of 12.) Both
+// sweeps steps 4 and 5 took 4 instead of 5, and step 1 9 instead of 12;
+// step 1 takes 11 since the watchdog returns, 2026-11-28.) Both
 // runs solve the same steps to the Newton tolerance: the energies and inside
 // measures agree to the printed digits, and the check below asks for agreement
 // to 1e-7 relative. A predictor that is never used, or a start that is taken

@@ -612,13 +612,17 @@ namespace PhaseField
                       "How often one Newton update may be halved when it "
                       "does not reduce the residual.");
     prm.declare_entry("Watchdog factor",
-                      "10",
+                      "100",
                       Patterns::Double(1.),
-                      "Once per time step, a full Newton update is accepted "
-                      "even if it increases the residual norm, by up to this "
-                      "factor (a non-monotone watchdog step); otherwise an "
-                      "update that does not decrease the norm is damped. "
-                      "1: always monotone.");
+                      "A full Newton update that increases the residual "
+                      "norm by less than this factor is taken anyway (the "
+                      "watchdog's relaxed step); if the next " +
+                        std::to_string(NewtonParameters::watchdog_iterations) +
+                        " iterations do not bring the norm below its value "
+                        "before, Newton returns there, damps that update "
+                        "and relaxes no more in this solve. Any other update "
+                        "that does not decrease the norm is damped. 1: "
+                        "always monotone.");
     prm.declare_entry("Maximum step halvings",
                       "4",
                       Patterns::Integer(0),

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <phasefield/solvers/newton_solver.h>
 
 namespace PhaseField
@@ -19,6 +20,8 @@ namespace PhaseField
       double lambda;
       /** The residual norm there. */
       double norm;
+      /** The residual norm after the full update. */
+      double full_norm;
     };
 
 
@@ -26,7 +29,7 @@ namespace PhaseField
     /**
      * trial = z + lambda update for lambda = 1, 1/2, ... until the
      * residual norm decreases below @p norm, reaches @p target, or (the
-     * full step, if @p watchdog_available) stays below
+     * full step, if @p may_relax: the watchdog's relaxed step) stays below
      * NewtonControl::watchdog_factor times @p norm; without line search
      * the full step. @p residual holds R(trial) on return.
      */
@@ -39,9 +42,9 @@ namespace PhaseField
               const NewtonControl                      &control,
               const double                              norm,
               const double                              target,
-              const bool                                watchdog_available)
+              const bool                                may_relax)
     {
-      Backtracking b{0, 1, std::numeric_limits<double>::quiet_NaN()};
+      Backtracking b{0, 1, std::numeric_limits<double>::quiet_NaN(), 0};
       for (; b.damping <= control.max_damping_steps;
            ++b.damping, b.lambda *= 0.5)
         {
@@ -49,8 +52,10 @@ namespace PhaseField
           trial.add(b.lambda, update);
           system.distribute_constraints(trial);
           system.residual(trial, residual);
-          b.norm              = system.residual_norm(residual);
-          const bool watchdog = b.damping == 0 && watchdog_available &&
+          b.norm = system.residual_norm(residual);
+          if (b.damping == 0)
+            b.full_norm = b.norm;
+          const bool watchdog = b.damping == 0 && may_relax &&
                                 b.norm < control.watchdog_factor * norm;
           if (!control.line_search ||
               (std::isfinite(b.norm) &&
@@ -64,9 +69,8 @@ namespace PhaseField
 
     /**
      * Take the update that backtrack() found in Newton iteration @p it:
-     * z = @p trial and @p norm = its residual norm, the watchdog spent if
-     * the norm rose. False (and nothing changed) if no damped update was
-     * accepted.
+     * z = @p trial and @p norm = its residual norm. False (and nothing
+     * changed) if no damped update was accepted.
      */
     bool
     accept_update(const Backtracking                       &step,
@@ -75,8 +79,7 @@ namespace PhaseField
                   const ConditionalOStream                 &pcout,
                   const TrilinosWrappers::MPI::BlockVector &trial,
                   TrilinosWrappers::MPI::BlockVector       &z,
-                  double                                   &norm,
-                  bool                                     &watchdog_used)
+                  double                                   &norm)
     {
       if (step.damping > control.max_damping_steps)
         {
@@ -87,13 +90,98 @@ namespace PhaseField
         }
       if (step.damping > 0)
         pcout << "    Newton iteration " << it << ": update damped by "
-              << step.lambda << std::endl;
-      if (step.norm >= norm)
-        watchdog_used = true;
+              << step.lambda << " (full update: residual " << step.full_norm
+              << ")" << std::endl;
       z    = trial;
       norm = step.norm;
       return true;
     }
+
+
+
+    /**
+     * The watchdog technique of Chamberlain, Powell, Lemarechal and
+     * Pedersen (Math. Programming Study 16 (1982) 1-17) for the residual
+     * norm as merit function: a full Newton update that raises the norm
+     * (by less than NewtonControl::watchdog_factor) is taken anyway, the
+     * relaxed step. If the next NewtonParameters::watchdog_iterations
+     * monotone iterations do
+     * not bring the norm below its value before the relaxed step, the
+     * iterate returns there and that update is damped as usual. After a
+     * success the watchdog may relax again, after a failure not in this
+     * Newton solve.
+     */
+    class Watchdog
+    {
+    public:
+      using BlockVector = TrilinosWrappers::MPI::BlockVector;
+
+      /** Whether the next full update may raise the norm. */
+      bool
+      may_relax() const
+      {
+        return available && !base;
+      }
+
+      /** Remember @p z, @p update and @p norm before a relaxed step. */
+      void
+      start(const BlockVector &z, const BlockVector &update, const double norm)
+      {
+        base      = std::make_unique<State>(State{z, update, norm});
+        remaining = NewtonParameters::watchdog_iterations;
+      }
+
+      /**
+       * After a monotone iteration that reached @p norm: whether a trial
+       * under way has failed (then restore()). A norm below the one before
+       * the relaxed step ends the trial as a success.
+       */
+      bool
+      trial_failed(const double norm)
+      {
+        if (!base)
+          return false;
+        if (norm < base->norm)
+          {
+            base.reset();
+            return false;
+          }
+        return --remaining == 0;
+      }
+
+      /**
+       * Back to the iterate before the relaxed step: @p z, its @p norm and
+       * the @p update taken there.
+       */
+      void
+      restore(BlockVector &z, BlockVector &update, double &norm)
+      {
+        z         = base->z;
+        update    = base->update;
+        norm      = base->norm;
+        available = false;
+        base.reset();
+      }
+
+      /** Whether a trial is under way. */
+      bool
+      in_trial() const
+      {
+        return base != nullptr;
+      }
+
+    private:
+      /** The iterate before the relaxed step. */
+      struct State
+      {
+        BlockVector z;
+        BlockVector update;
+        double      norm;
+      };
+      bool                   available = true;
+      unsigned int           remaining = 0;
+      std::unique_ptr<State> base;
+    };
 
 
 
@@ -136,12 +224,7 @@ namespace PhaseField
     const double roundoff_level =
       std::max(control.roundoff_level, system.roundoff_level(z));
 
-    // Non-monotone "watchdog" step: once per solve a full Newton update is
-    // accepted even if it increases the residual norm by up to
-    // NewtonControl::watchdog_factor; the norm of the saddle-point
-    // residual is a poor merit function far from the solution, and damping
-    // the first update usually costs two or three extra iterations.
-    bool                  watchdog_used = false;
+    Watchdog              watchdog;
     internal::ForcingTerm forcing;
     for (unsigned int it = 1; it <= control.max_iterations; ++it)
       {
@@ -161,16 +244,16 @@ namespace PhaseField
         report.linear_iterations += linear_iterations;
         report.newton_iterations = it;
 
-        const Backtracking step          = backtrack(system,
-                                            z,
-                                            update,
-                                            trial,
-                                            residual,
-                                            control,
-                                            norm,
-                                            target,
-                                            !watchdog_used);
-        const double       previous_norm = norm;
+        Backtracking step          = backtrack(system,
+                                      z,
+                                      update,
+                                      trial,
+                                      residual,
+                                      control,
+                                      norm,
+                                      target,
+                                      watchdog.may_relax());
+        const double previous_norm = norm;
         // at round-off no update reduces the residual any further: that
         // is convergence as the stagnation in reached_target() is
         if (step.damping > control.max_damping_steps &&
@@ -180,15 +263,30 @@ namespace PhaseField
             report.final_residual_norm = norm;
             return report;
           }
-        if (!accept_update(
-              step, it, control, pcout, trial, z, norm, watchdog_used))
+        const bool relaxed =
+          step.damping == 0 && step.norm >= norm && step.norm > target;
+        if (relaxed)
+          watchdog.start(z, update, norm);
+        const bool failed_trial =
+          (step.damping > control.max_damping_steps && watchdog.in_trial()) ||
+          (!relaxed && watchdog.trial_failed(step.norm));
+        if (failed_trial)
+          {
+            watchdog.restore(z, update, norm);
+            pcout << "    Newton iteration " << it
+                  << ": watchdog failed, back to residual " << norm
+                  << std::endl;
+            step = backtrack(
+              system, z, update, trial, residual, control, norm, target, false);
+          }
+        if (!accept_update(step, it, control, pcout, trial, z, norm))
           return report;
         report.final_residual_norm = norm;
         if (verbose)
           pcout << "    Newton " << it << ": residual " << norm << " ("
                 << linear_iterations << " linear iterations, "
                 << linear_solver.n_factorizations() << " factorizations)"
-                << std::endl;
+                << (relaxed ? ", watchdog" : "") << std::endl;
         if (reached_target(norm, previous_norm, target, roundoff_level))
           {
             report.converged = true;

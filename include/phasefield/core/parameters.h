@@ -292,10 +292,20 @@ namespace PhaseField
     /** Backtracking halvings of one Newton update before giving up. */
     unsigned int max_damping_steps;
     /**
-     * Once per time step a full update may increase the residual norm by
-     * up to this factor (1: always monotone).
+     * A full update that increases the residual norm by less than this
+     * factor is taken anyway, the watchdog's relaxed step (1: always
+     * monotone; see watchdog_iterations).
      */
     double watchdog_factor;
+    /**
+     * Iterations after a relaxed step in which the residual norm must fall
+     * below its value before that step; otherwise Newton's method returns
+     * there, damps the update and relaxes no more in the solve. On the
+     * level-8 cube's first step (doc/benchmarks.md, "The watchdog with a
+     * return") a relaxed step that raised the norm 25-fold needed 6, and 4
+     * were not enough.
+     */
+    static constexpr unsigned int watchdog_iterations = 8;
     /** How often a failed time step may be retried with half the step. */
     unsigned int max_step_halvings;
     /**

@@ -16,9 +16,10 @@ namespace PhaseField
    * at NewtonControl::roundoff_level). The first linear solve uses a loose
    * relative tolerance, later ones just enough to reach the target; an
    * update that does not decrease the residual is halved up to
-   * NewtonControl::max_damping_steps times, except once per call
-   * (the "watchdog", NewtonControl::watchdog_factor). On failure the report
-   * says so and @p z holds the last accepted iterate.
+   * NewtonControl::max_damping_steps times, except where the watchdog
+   * takes the full update (NewtonControl::watchdog_factor,
+   * NewtonParameters::watchdog_iterations). On failure the report says so
+   * and @p z holds the last accepted iterate.
    */
   StepReport
   newton_solve(NonlinearSystem                            &system,
