@@ -594,6 +594,16 @@ namespace PhaseField
 
   template <int dim>
   void
+  AugmentedLagrangianScheme<dim>::before_remesh()
+  {
+    // the solver only: the penalty carries over re-meshing
+    nested.before_remesh();
+  }
+
+
+
+  template <int dim>
+  void
   AugmentedLagrangianScheme<dim>::after_remesh(BlockVector &state,
                                                const double tau)
   {

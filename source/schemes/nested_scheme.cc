@@ -1247,6 +1247,15 @@ namespace PhaseField
 
   template <int dim>
   void
+  NestedScheme<dim>::before_remesh()
+  {
+    reset_solver();
+  }
+
+
+
+  template <int dim>
+  void
   NestedScheme<dim>::after_remesh(BlockVector &state, const double tau)
   {
     reset_solver();

@@ -321,6 +321,15 @@ namespace PhaseField
 
   template <int dim>
   void
+  SemiImplicitScheme<dim>::before_remesh()
+  {
+    reset_solver();
+  }
+
+
+
+  template <int dim>
+  void
   SemiImplicitScheme<dim>::after_remesh(BlockVector &state, const double tau)
   {
     reset_solver();

@@ -85,7 +85,11 @@ namespace PhaseField
     , n_steps(settings.model.n_ramp_steps + settings.model.n_steps)
     , final_step(n_steps)
     , state_tau(settings.model.tau)
-  {}
+  {
+    scheme_before_remesh = discretization.get_triangulation()
+                             .signals.pre_distributed_refinement.connect(
+                               [this]() { this->scheme.before_remesh(); });
+  }
 
 
 

@@ -251,6 +251,9 @@ namespace PhaseField
             BlockVector       &state,
             const double       tau) override;
     void
+    before_remesh() override;
+
+    void
     after_remesh(BlockVector &state, const double tau) override;
     void
     reset_solver() override;

@@ -1,6 +1,7 @@
 #ifndef phasefield_time_time_loop_h
 #define phasefield_time_time_loop_h
 
+#include <boost/signals2/connection.hpp>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
@@ -430,6 +431,12 @@ namespace PhaseField
     BlockVector old_state;
     /** The history of the last steps (if extrapolates()). */
     StartValuePredictor predictor;
+    /**
+     * TimeSteppingScheme::before_remesh() on the triangulation's
+     * pre_distributed_refinement signal: only when the mesh does change, so
+     * that a step on an unchanged mesh keeps its solver.
+     */
+    boost::signals2::scoped_connection scheme_before_remesh;
 
     /**
      * Does the current attempt of the step start from the predictor's
