@@ -263,8 +263,9 @@ namespace PhaseField
             report.final_residual_norm = norm;
             return report;
           }
-        const bool relaxed =
-          step.damping == 0 && step.norm >= norm && step.norm > target;
+        // without line search every update is taken: no watchdog
+        const bool relaxed = control.line_search && step.damping == 0 &&
+                             step.norm >= norm && step.norm > target;
         if (relaxed)
           watchdog.start(z, update, norm);
         const bool failed_trial =
