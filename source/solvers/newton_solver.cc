@@ -105,11 +105,10 @@ namespace PhaseField
      * norm as merit function: a full Newton update that raises the norm
      * (by less than NewtonControl::watchdog_factor) is taken anyway, the
      * relaxed step. If the next NewtonParameters::watchdog_iterations
-     * monotone iterations do
-     * not bring the norm below its value before the relaxed step, the
-     * iterate returns there and that update is damped as usual. After a
-     * success the watchdog may relax again, after a failure not in this
-     * Newton solve.
+     * monotone iterations do not bring the norm below its value before the
+     * relaxed step, the iterate returns there and that update is damped as
+     * usual. After a success the watchdog may relax again, after a failure
+     * not in this Newton solve.
      */
     class Watchdog
     {

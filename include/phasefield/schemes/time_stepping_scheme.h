@@ -159,8 +159,8 @@ namespace PhaseField
      * Free what the scheme keeps for the current mesh (multigrid
      * hierarchies, factorisations, matrices): called when the mesh is about
      * to change, so that these and the new mesh's DoFs and matrices do not
-     * exist at once (level-7 cube, 3 steps: peak memory 2331 MB, 2562 MB
-     * when they were freed after the transfer; doc/benchmarks.md, "The
+     * exist at once (level-7 cube, 3 steps: peak memory 2331 MB, 2564 MB (10
+     * steps) when they were freed after the transfer; doc/benchmarks.md, "The
      * watchdog with a return"). after_remesh()
      * follows.
      */
