@@ -5,6 +5,9 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <iomanip>
+#ifdef __GLIBC__
+#  include <malloc.h>
+#endif
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
 
@@ -183,16 +186,33 @@ namespace PhaseField
 
 
   void
+  return_free_heap_memory()
+  {
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+  }
+
+
+
+  void
   print_peak_memory(const dealii::ConditionalOStream &pcout,
                     const MPI_Comm                    mpi_communicator)
   {
     dealii::Utilities::System::MemoryStats memory;
     dealii::Utilities::System::get_memory_stats(memory);
-    const double peak_megabytes =
-      dealii::Utilities::MPI::sum(memory.VmHWM / 1024., mpi_communicator);
+    // VmHWM is in KiB
+    constexpr double bytes_per_kib = 1024.;
+    constexpr double bytes_per_mib = 1024. * bytes_per_kib;
+    constexpr double bytes_per_gb  = 1e9;
+    const double     peak_bytes =
+      dealii::Utilities::MPI::sum(memory.VmHWM * bytes_per_kib,
+                                  mpi_communicator);
     pcout << "Peak resident memory, summed over "
           << dealii::Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " rank(s): " << std::fixed << std::setprecision(0)
-          << peak_megabytes << " MB" << std::defaultfloat << std::endl;
+          << peak_bytes / bytes_per_mib << " MiB (" << std::setprecision(2)
+          << peak_bytes / bytes_per_gb << " GB)" << std::defaultfloat
+          << std::endl;
   }
 } // namespace PhaseField

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <phasefield/core/statistics.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/mesh/narrow_band.h>
 
@@ -381,22 +382,29 @@ namespace PhaseField
     const std::vector<Vector>        &ghosted,
     const std::vector<BlockVector *> &fields)
   {
-    parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
-    std::vector<const Vector *>                          in;
-    for (const auto &g : ghosted)
-      in.push_back(&g);
-    transfer.prepare_for_coarsening_and_refinement(in);
-    triangulation.execute_coarsening_and_refinement();
+    {
+      parallel::distributed::SolutionTransfer<dim, Vector> transfer(
+        dof_handler);
+      std::vector<const Vector *> in;
+      for (const auto &g : ghosted)
+        in.push_back(&g);
+      transfer.prepare_for_coarsening_and_refinement(in);
+      // the operators of the old mesh are not needed any more: free them
+      // before the refinement packs the fields, the peak of a re-meshing
+      operators.release();
+      triangulation.execute_coarsening_and_refinement();
 
-    setup_dofs();
-    std::vector<Vector *> out;
-    for (BlockVector *f : fields)
-      {
-        reinit(*f, f->n_blocks());
-        for (unsigned int b = 0; b < f->n_blocks(); ++b)
-          out.push_back(&f->block(b));
-      }
-    transfer.interpolate(out);
+      setup_dofs();
+      std::vector<Vector *> out;
+      for (BlockVector *f : fields)
+        {
+          reinit(*f, f->n_blocks());
+          for (unsigned int b = 0; b < f->n_blocks(); ++b)
+            out.push_back(&f->block(b));
+        }
+      transfer.interpolate(out);
+    }
+    return_free_heap_memory();
   }
 
 

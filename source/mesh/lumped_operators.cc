@@ -1,9 +1,9 @@
+#include <algorithm>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
-#include <algorithm>
 #include <phasefield/mesh/lumped_operators.h>
 
 namespace PhaseField
@@ -38,6 +38,19 @@ namespace PhaseField
                             Utilities::MPI::min(min_cell_mass,
                                                 mpi_communicator));
     set_stiffness_diagonal();
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::release()
+  {
+    stiffness.clear();
+    lumped_mass.clear();
+    inverse_lumped_mass.clear();
+    std::vector<unsigned int>().swap(constrained_local_indices);
+    std::vector<int>().swap(stiffness_diagonal);
   }
 
 
@@ -260,8 +273,10 @@ namespace PhaseField
   compressed_rows(const TrilinosWrappers::SparseMatrix &matrix)
   {
     CompressedRows rows;
-    const int      error = matrix.trilinos_matrix().ExtractCrsDataPointers(
-      rows.offsets, rows.columns, rows.values);
+    const int      error =
+      matrix.trilinos_matrix().ExtractCrsDataPointers(rows.offsets,
+                                                      rows.columns,
+                                                      rows.values);
     AssertThrow(error == 0,
                 ExcMessage("The matrix is not compressed with optimised "
                            "storage."));

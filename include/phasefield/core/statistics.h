@@ -77,7 +77,20 @@ namespace PhaseField
   create_output_directory(const std::string &directory,
                           const MPI_Comm     mpi_communicator);
 
-  /** Print the peak resident memory summed over all ranks. Collective. */
+  /**
+   * Return the free pages of this process's heap to the operating system
+   * (glibc's malloc_trim; nothing elsewhere). A mesh transfer packs the
+   * fields cell by cell into many small blocks; once freed, their pages
+   * stay resident, because malloc only returns the top of the heap by
+   * itself.
+   */
+  void
+  return_free_heap_memory();
+
+  /**
+   * Print the peak resident memory (VmHWM) summed over all ranks, in MiB
+   * (2^20 bytes) and in GB (10^9 bytes). Collective.
+   */
   void
   print_peak_memory(const dealii::ConditionalOStream &pcout,
                     const MPI_Comm                    mpi_communicator);

@@ -43,6 +43,15 @@ namespace PhaseField
            const StiffnessQuadrature                stiffness_quadrature =
              StiffnessQuadrature::gauss);
 
+    /**
+     * Free L, M and the per-row data (the index sets stay): called before
+     * the mesh changes, whose operators reinit() builds anew, so that the
+     * old ones are not held through the refinement's transfer buffers
+     * (Discretization::execute_with_transfer()).
+     */
+    void
+    release();
+
     /** Diagonal of the lumped mass matrix (zero at constrained DoFs). */
     dealii::TrilinosWrappers::MPI::Vector lumped_mass;
 
@@ -180,15 +189,15 @@ namespace PhaseField
                         const dealii::types::global_dof_index         row,
                         const Function                               &f)
   {
-    const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
+    const Epetra_CrsMatrix &m         = matrix.trilinos_matrix();
     int                     n_entries = 0;
     double                 *values    = nullptr;
     int                    *columns   = nullptr;
-    m.ExtractMyRowView(m.LRID(static_cast<
-                         dealii::TrilinosWrappers::types::int_type>(row)),
-                       n_entries,
-                       values,
-                       columns);
+    m.ExtractMyRowView(
+      m.LRID(static_cast<dealii::TrilinosWrappers::types::int_type>(row)),
+      n_entries,
+      values,
+      columns);
     for (int k = 0; k < n_entries; ++k)
       f(static_cast<dealii::types::global_dof_index>(
           dealii::TrilinosWrappers::global_column_index(m, columns[k])),
