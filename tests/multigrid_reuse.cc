@@ -22,6 +22,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <phasefield/mesh/stiffness_plus_diagonal.h>
 #include <phasefield/solvers/linear_solver.h>
 
 using namespace dealii;

@@ -27,7 +27,7 @@
 #include <phasefield/time/start_value_predictor.h>
 
 using namespace PhaseField;
-using BlockVector = StartValuePredictor::BlockVector;
+using BlockVector = PhaseField::BlockVector;
 
 namespace
 {

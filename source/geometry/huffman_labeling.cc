@@ -43,7 +43,8 @@ namespace PhaseField
 
       /** The bottom and top vertex DoFs of a cell (FE_Q(1)). */
       template <int dim>
-      using ColumnDofs = std::array<types::global_dof_index, 2 * n_corners<dim>>;
+      using ColumnDofs =
+        std::array<types::global_dof_index, 2 * n_corners<dim>>;
 
       /**
        * Call @p visit(point, weights, dofs) for every point of @p grid
@@ -110,7 +111,7 @@ namespace PhaseField
       /** u(x', top) - u(x', bottom) in a cell, from its vertex values. */
       template <int dim>
       double
-      column_difference(const TrilinosWrappers::MPI::Vector      &u,
+      column_difference(const Vector                             &u,
                         const std::array<double, n_corners<dim>> &w,
                         const ColumnDofs<dim>                    &dofs)
       {
@@ -209,9 +210,9 @@ namespace PhaseField
 
     template <int dim>
     std::vector<double>
-    labeling(const DoFHandler<dim>               &dof_handler,
-             const TrilinosWrappers::MPI::Vector &u,
-             const LabelingGrid<dim>             &grid)
+    labeling(const DoFHandler<dim>   &dof_handler,
+             const Vector            &u,
+             const LabelingGrid<dim> &grid)
     {
       std::vector<double> alpha(grid.size(), 0.);
       for_each_column_point(
@@ -231,23 +232,23 @@ namespace PhaseField
 
     template <int dim>
     void
-    add_labeling_derivative(const DoFHandler<dim>               &dof_handler,
-                            const AffineConstraints<double>     &constraints,
-                            const TrilinosWrappers::MPI::Vector &u,
-                            const LabelingGrid<dim>             &grid,
-                            const std::vector<double>           &r,
-                            TrilinosWrappers::MPI::Vector       &gradient)
+    add_labeling_derivative(const DoFHandler<dim>           &dof_handler,
+                            const AffineConstraints<double> &constraints,
+                            const Vector                    &u,
+                            const LabelingGrid<dim>         &grid,
+                            const std::vector<double>       &r,
+                            Vector                          &gradient)
     {
       AssertDimension(r.size(), grid.size());
       constexpr unsigned int               nc = n_corners<dim>;
-      Vector<double>                       local(2 * nc);
+      dealii::Vector<double>               local(2 * nc);
       std::vector<types::global_dof_index> local_dofs(2 * nc);
       for_each_column_point(
         dof_handler,
         grid,
-        [&](const unsigned int                 i,
-            const std::array<double, nc>      &w,
-            const ColumnDofs<dim>             &dofs) {
+        [&](const unsigned int            i,
+            const std::array<double, nc> &w,
+            const ColumnDofs<dim>        &dofs) {
           const double difference = column_difference<dim>(u, w, dofs);
           // d/du (1/2)|difference|; zero where the sign has a kink
           const double factor =
@@ -292,16 +293,16 @@ namespace PhaseField
             p[dim - 2] = double(row) / n;
             for (unsigned int z = 0; z <= n; ++z)
               {
-                p[dim - 1]                    = double(z) / n;
+                p[dim - 1]                   = double(z) / n;
                 values[column * (n + 1) + z] = phase_field.value(p);
               }
           }
         return values;
       };
 
-      const unsigned int pixels_per_row = Utilities::pow(n, dim - 2);
-      const std::vector<double> &s      = grid.unit_points();
-      const unsigned int         nq     = s.size();
+      const unsigned int         pixels_per_row = Utilities::pow(n, dim - 2);
+      const std::vector<double> &s              = grid.unit_points();
+      const unsigned int         nq             = s.size();
       std::vector<double>        alpha(grid.size(), 0.);
       const IndexSet             rows =
         Utilities::MPI::create_evenly_distributed_partitioning(comm, n);
@@ -319,14 +320,14 @@ namespace PhaseField
                     xi[k] = s[rest % nq];
                     rest /= nq;
                   }
-                const auto w = corner_weights<dim>(xi);
+                const auto                     w = corner_weights<dim>(xi);
                 std::array<const double *, nc> corner;
                 for (unsigned int c = 0; c < nc; ++c)
                   {
                     // column of corner c within its node row (3D: x_1)
                     const unsigned int column = dim == 3 ? m + (c & 1) : 0;
-                    corner[c] = pair[(c >> (dim - 2)) & 1].data() +
-                                column * (n + 1);
+                    corner[c] =
+                      pair[(c >> (dim - 2)) & 1].data() + column * (n + 1);
                   }
                 double sum = 0;
                 for (unsigned int z = 0; z < n; ++z)
@@ -368,7 +369,7 @@ namespace PhaseField
       std::vector<double> alpha(grid.size());
       for (unsigned int i = 0; i < grid.size(); ++i)
         {
-          const Point<dim - 1> p = grid.point(i);
+          const Point<dim - 1> p     = grid.point(i);
           unsigned int         pixel = 0, stride = 1;
           for (unsigned int k = 0; k + 1 < dim; ++k)
             {
@@ -384,24 +385,24 @@ namespace PhaseField
 
     template class LabelingGrid<2>;
     template class LabelingGrid<3>;
-#define INSTANTIATE(dim)                                                     \
-  template std::vector<double> labeling(const DoFHandler<dim> &,             \
-                                        const TrilinosWrappers::MPI::Vector &, \
-                                        const LabelingGrid<dim> &);          \
-  template void add_labeling_derivative(const DoFHandler<dim> &,             \
-                                        const AffineConstraints<double> &,   \
-                                        const TrilinosWrappers::MPI::Vector &, \
-                                        const LabelingGrid<dim> &,           \
-                                        const std::vector<double> &,         \
-                                        TrilinosWrappers::MPI::Vector &);    \
-  template std::vector<double> labeling_of_function(const Function<dim> &,   \
-                                                    const LabelingGrid<dim> &, \
-                                                    const MPI_Comm);         \
-  template std::vector<double> labeling_of_image(const std::vector<double> &, \
-                                                 const unsigned int,         \
-                                                 const unsigned int,         \
-                                                 const double,               \
-                                                 const LabelingGrid<dim> &,  \
+#define INSTANTIATE(dim)                                                                  \
+  template std::vector<double> labeling(const DoFHandler<dim> &,                          \
+                                        const Vector &,                                   \
+                                        const LabelingGrid<dim> &);                       \
+  template void                add_labeling_derivative(const DoFHandler<dim> &,           \
+                                                       const AffineConstraints<double> &, \
+                                                       const Vector &,                    \
+                                                       const LabelingGrid<dim> &,         \
+                                                       const std::vector<double> &,       \
+                                                       Vector &);                         \
+  template std::vector<double> labeling_of_function(const Function<dim> &,                \
+                                                    const LabelingGrid<dim> &,            \
+                                                    const MPI_Comm);                      \
+  template std::vector<double> labeling_of_image(const std::vector<double> &,             \
+                                                 const unsigned int,                      \
+                                                 const unsigned int,                      \
+                                                 const double,                            \
+                                                 const LabelingGrid<dim> &,               \
                                                  const std::string &);
     INSTANTIATE(2)
     INSTANTIATE(3)

@@ -243,7 +243,8 @@ namespace PhaseField
     ImageDistance::ImageDistance(const std::string &filename,
                                  const double       threshold)
     {
-      const GrayImage image = read_gray_image(filename, "Geometry / Image file");
+      const GrayImage image =
+        read_gray_image(filename, "Geometry / Image file");
       if (image.nx < 2 || image.ny < 2)
         throw InputError("The image file <" + filename +
                          "> given in <Geometry / Image file> has fewer than "
@@ -360,7 +361,7 @@ namespace PhaseField
     {
       constexpr double        outline_width = 1.5; // pixels
       constexpr unsigned char full          = 255;
-      const auto near = [&](const double pixel, const double x) {
+      const auto              near = [&](const double pixel, const double x) {
         return std::abs(pixel - (x * n - 0.5)) <= outline_width / 2;
       };
       const auto between =
@@ -418,15 +419,15 @@ namespace PhaseField
 
 
     std::vector<double>
-    sample_on_pixel_grid(const DoFHandler<2>                 &dof_handler,
-                         const TrilinosWrappers::MPI::Vector &u,
-                         const unsigned int                   n)
+    sample_on_pixel_grid(const DoFHandler<2> &dof_handler,
+                         const Vector        &u,
+                         const unsigned int   n)
     {
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      TrilinosWrappers::MPI::Vector ghosted(dof_handler.locally_owned_dofs(),
-                                            relevant,
-                                            u.get_mpi_communicator());
+      Vector ghosted(dof_handler.locally_owned_dofs(),
+                     relevant,
+                     u.get_mpi_communicator());
       ghosted = u;
 
       // every pixel centre lies in exactly one half-open cell [x0,x1)x[y0,y1)

@@ -152,7 +152,7 @@ namespace PhaseField
 
 
   template <int dim>
-  std::vector<typename Discretization<dim>::Vector>
+  std::vector<Vector>
   Discretization<dim>::ghosted_copies(const BlockVector &fields) const
   {
     std::vector<Vector> ghosted;
@@ -164,7 +164,7 @@ namespace PhaseField
 
 
   template <int dim>
-  typename Discretization<dim>::Vector
+  Vector
   Discretization<dim>::ghosted_copy(const Vector &v) const
   {
     Vector ghosted(operators.locally_owned_dofs,

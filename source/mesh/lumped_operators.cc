@@ -26,10 +26,10 @@ namespace PhaseField
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
-    stiffness.reinit(locally_owned_dofs,
-                     locally_owned_dofs,
-                     dsp,
-                     mpi_communicator);
+    stiffness_backend.matrix.reinit(locally_owned_dofs,
+                                    locally_owned_dofs,
+                                    dsp,
+                                    mpi_communicator);
     lumped_mass.reinit(locally_owned_dofs, mpi_communicator);
 
     const double min_cell_mass =
@@ -37,7 +37,7 @@ namespace PhaseField
     set_inverse_lumped_mass(constraints,
                             Utilities::MPI::min(min_cell_mass,
                                                 mpi_communicator));
-    set_stiffness_diagonal();
+    stiffness_backend.find_diagonal();
   }
 
 
@@ -46,31 +46,10 @@ namespace PhaseField
   void
   LumpedOperators<dim>::release()
   {
-    stiffness.clear();
+    stiffness_backend.clear();
     lumped_mass.clear();
     inverse_lumped_mass.clear();
     std::vector<unsigned int>().swap(constrained_local_indices);
-    std::vector<int>().swap(stiffness_diagonal);
-  }
-
-
-
-  template <int dim>
-  void
-  LumpedOperators<dim>::set_stiffness_diagonal()
-  {
-    const Epetra_CrsMatrix &l    = stiffness.trilinos_matrix();
-    const CompressedRows    rows = compressed_rows(stiffness);
-    stiffness_diagonal.resize(l.NumMyRows());
-    for (int row = 0; row < l.NumMyRows(); ++row)
-      {
-        const int *begin = rows.columns + rows.offsets[row];
-        const int *end   = rows.columns + rows.offsets[row + 1];
-        const int *found = std::find(begin, end, l.LCID(l.GRID(row)));
-        AssertThrow(found != end,
-                    ExcMessage("The stiffness matrix lacks a diagonal entry."));
-        stiffness_diagonal[row] = static_cast<int>(found - rows.columns);
-      }
   }
 
 
@@ -95,9 +74,9 @@ namespace PhaseField
                             lumping_quadrature,
                             update_values | update_JxW_values);
 
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-    Vector<double>     cell_mass(dofs_per_cell);
+    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
+    dealii::Vector<double> cell_mass(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     double min_cell_mass = std::numeric_limits<double>::max();
 
@@ -122,12 +101,12 @@ namespace PhaseField
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(cell_matrix,
                                                  dof_indices,
-                                                 stiffness);
+                                                 stiffness_backend.matrix);
           constraints.distribute_local_to_global(cell_mass,
                                                  dof_indices,
                                                  lumped_mass);
         }
-    stiffness.compress(VectorOperation::add);
+    stiffness_backend.matrix.compress(VectorOperation::add);
     lumped_mass.compress(VectorOperation::add);
     return min_cell_mass;
   }
@@ -162,10 +141,11 @@ namespace PhaseField
   template <int dim>
   void
   LumpedOperators<dim>::stiffness_plus_weighted_mass(
-    const double                         stiffness_factor,
-    const TrilinosWrappers::MPI::Vector &nodal_weight,
-    TrilinosWrappers::SparseMatrix      &matrix) const
+    const double                    stiffness_factor,
+    const Vector                   &nodal_weight,
+    TrilinosWrappers::SparseMatrix &matrix) const
   {
+    const auto &stiffness = stiffness_backend.matrix;
     if (!share_pattern(matrix, stiffness))
       matrix.copy_from(stiffness);
     const CompressedRows l   = compressed_rows(stiffness);
@@ -174,7 +154,7 @@ namespace PhaseField
     for (int k = 0; k < l.offsets[n]; ++k)
       out.values[k] = stiffness_factor * l.values[k];
     for (unsigned int i = 0; i < n; ++i)
-      out.values[stiffness_diagonal[i]] +=
+      out.values[stiffness_backend.diagonal_positions[i]] +=
         lumped_mass.begin()[i] * nodal_weight.begin()[i];
   }
 
@@ -183,15 +163,15 @@ namespace PhaseField
   template <int dim>
   void
   LumpedOperators<dim>::stiffness_plus_weighted_mass(
-    const double                         stiffness_factor,
-    const TrilinosWrappers::MPI::Vector &nodal_weight,
-    StiffnessPlusDiagonal               &op) const
+    const double                       stiffness_factor,
+    const Vector                      &nodal_weight,
+    std::unique_ptr<ShiftedStiffness> &op) const
   {
-    TrilinosWrappers::MPI::Vector diagonal(lumped_mass);
-    const unsigned int            n = nodal_weight.locally_owned_size();
+    Vector             diagonal(lumped_mass);
+    const unsigned int n = nodal_weight.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       diagonal.begin()[i] *= nodal_weight.begin()[i];
-    op.reinit(stiffness, stiffness_factor, diagonal);
+    stiffness_backend.shift(stiffness_factor, diagonal, op);
   }
 
 
@@ -199,8 +179,8 @@ namespace PhaseField
   template <int dim>
   void
   LumpedOperators<dim>::add_to_diagonal(
-    const TrilinosWrappers::MPI::Vector &values,
-    TrilinosWrappers::SparseMatrix      &matrix) const
+    const Vector                   &values,
+    TrilinosWrappers::SparseMatrix &matrix) const
   {
     const unsigned int n = values.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
@@ -216,8 +196,7 @@ namespace PhaseField
 
   template <int dim>
   void
-  LumpedOperators<dim>::zero_constrained(
-    TrilinosWrappers::MPI::Vector &vector) const
+  LumpedOperators<dim>::zero_constrained(Vector &vector) const
   {
     for (const unsigned int i : constrained_local_indices)
       vector.begin()[i] = 0;
@@ -227,9 +206,7 @@ namespace PhaseField
 
   template <int dim>
   double
-  LumpedOperators<dim>::mass_product(
-    const TrilinosWrappers::MPI::Vector &x,
-    const TrilinosWrappers::MPI::Vector &y) const
+  LumpedOperators<dim>::mass_product(const Vector &x, const Vector &y) const
   {
     const unsigned int n = x.locally_owned_size();
     const double      *m = lumped_mass.begin();
@@ -243,12 +220,11 @@ namespace PhaseField
 
   template <int dim>
   double
-  LumpedOperators<dim>::stiffness_product(
-    const TrilinosWrappers::MPI::Vector &x) const
+  LumpedOperators<dim>::stiffness_product(const Vector &x) const
   {
-    TrilinosWrappers::MPI::Vector y(x), Ly(x);
+    Vector y(x), Ly(x);
     zero_constrained(y);
-    stiffness.vmult(Ly, y);
+    stiffness_backend.vmult(Ly, y);
     return y * Ly;
   }
 
@@ -256,7 +232,7 @@ namespace PhaseField
 
   template <int dim>
   double
-  LumpedOperators<dim>::dual_norm(const TrilinosWrappers::MPI::Vector &r) const
+  LumpedOperators<dim>::dual_norm(const Vector &r) const
   {
     const unsigned int n     = r.locally_owned_size();
     const double      *m_inv = inverse_lumped_mass.begin();

@@ -46,7 +46,7 @@ namespace PhaseField
        * |u| < @p threshold, or u changes sign on it.
        */
       bool
-      in_band(const Vector<double> &values, const double threshold)
+      in_band(const dealii::Vector<double> &values, const double threshold)
       {
         bool near = false, positive = false, negative = false;
         for (const double value : values)
@@ -70,9 +70,9 @@ namespace PhaseField
       bool
       first_of_group_outside_band(
         const typename DoFHandler<dim>::active_cell_iterator &cell,
-        const TrilinosWrappers::MPI::Vector                  &u,
+        const Vector                                         &u,
         const double                                          threshold,
-        Vector<double>                                       &values)
+        dealii::Vector<double>                               &values)
       {
         if (cell->level() == 0 || cell->parent()->child(0) != cell)
           return false;
@@ -93,17 +93,17 @@ namespace PhaseField
     template <int dim>
     bool
     flag_cells_from_phase_field(const DoFHandler<dim> &dof_handler,
-                                const TrilinosWrappers::MPI::Vector &u,
-                                const double                         band_width,
-                                const unsigned int finest_level,
-                                const unsigned int coarsest_level,
-                                const double       coarsening_band_width)
+                                const Vector          &u,
+                                const double           band_width,
+                                const unsigned int     finest_level,
+                                const unsigned int     coarsest_level,
+                                const double           coarsening_band_width)
     {
       const double threshold = std::tanh(band_width);
       const double coarsening_threshold =
         std::tanh(std::max(band_width, coarsening_band_width));
-      Vector<double> values(dof_handler.get_fe().n_dofs_per_cell());
-      unsigned int   n_flagged = 0;
+      dealii::Vector<double> values(dof_handler.get_fe().n_dofs_per_cell());
+      unsigned int           n_flagged = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -133,16 +133,16 @@ namespace PhaseField
 
     template <int dim>
     bool
-    band_fits(const DoFHandler<dim>               &dof_handler,
-              const TrilinosWrappers::MPI::Vector &u,
-              const double                         inner_width,
-              const double                         outer_width,
-              const unsigned int                   finest_level)
+    band_fits(const DoFHandler<dim> &dof_handler,
+              const Vector          &u,
+              const double           inner_width,
+              const double           outer_width,
+              const unsigned int     finest_level)
     {
-      const double   inner_threshold = std::tanh(std::max(inner_width, 0.));
-      const double   outer_threshold = std::tanh(outer_width);
-      Vector<double> values(dof_handler.get_fe().n_dofs_per_cell());
-      unsigned int   n_misfits = 0;
+      const double inner_threshold = std::tanh(std::max(inner_width, 0.));
+      const double outer_threshold = std::tanh(outer_width);
+      dealii::Vector<double> values(dof_handler.get_fe().n_dofs_per_cell());
+      unsigned int           n_misfits = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -176,27 +176,27 @@ namespace PhaseField
                                     const unsigned int);
     template bool
     flag_cells_from_phase_field<2>(const DoFHandler<2> &,
-                                   const TrilinosWrappers::MPI::Vector &,
+                                   const Vector &,
                                    const double,
                                    const unsigned int,
                                    const unsigned int,
                                    const double);
     template bool
     flag_cells_from_phase_field<3>(const DoFHandler<3> &,
-                                   const TrilinosWrappers::MPI::Vector &,
+                                   const Vector &,
                                    const double,
                                    const unsigned int,
                                    const unsigned int,
                                    const double);
     template bool
     band_fits<2>(const DoFHandler<2> &,
-                 const TrilinosWrappers::MPI::Vector &,
+                 const Vector &,
                  const double,
                  const double,
                  const unsigned int);
     template bool
     band_fits<3>(const DoFHandler<3> &,
-                 const TrilinosWrappers::MPI::Vector &,
+                 const Vector &,
                  const double,
                  const double,
                  const unsigned int);

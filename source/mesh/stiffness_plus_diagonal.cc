@@ -14,7 +14,7 @@ namespace PhaseField
   StiffnessPlusDiagonal::reinit(
     const dealii::TrilinosWrappers::SparseMatrix &stiffness_matrix,
     const double                                  factor,
-    dealii::TrilinosWrappers::MPI::Vector        &diagonal_entries)
+    Vector                                       &diagonal_entries)
   {
     stiffness        = &stiffness_matrix;
     stiffness_factor = factor;
@@ -25,9 +25,7 @@ namespace PhaseField
 
 
   void
-  StiffnessPlusDiagonal::vmult(
-    dealii::TrilinosWrappers::MPI::Vector       &dst,
-    const dealii::TrilinosWrappers::MPI::Vector &src) const
+  StiffnessPlusDiagonal::vmult(Vector &dst, const Vector &src) const
   {
     Assert(stiffness != nullptr, dealii::ExcNotInitialized());
     stiffness->vmult(dst, src);
@@ -41,18 +39,10 @@ namespace PhaseField
 
 
 
-  bool
-  StiffnessPlusDiagonal::empty() const
-  {
-    return stiffness == nullptr;
-  }
-
-
-
   dealii::types::global_dof_index
   StiffnessPlusDiagonal::m() const
   {
-    return empty() ? 0 : stiffness->m();
+    return stiffness == nullptr ? 0 : stiffness->m();
   }
 
 

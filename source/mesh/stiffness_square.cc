@@ -31,7 +31,7 @@ namespace PhaseField
   StiffnessSquare<dim>::StiffnessSquare(const LumpedOperators<dim> &operators)
     : operators(operators)
   {
-    const auto &l = operators.stiffness;
+    const auto &l = operators.stiffness_matrix();
     l.mmult(stiffness_square, l, operators.inverse_lumped_mass);
 
     const Epetra_CrsMatrix &lm     = l.trilinos_matrix();
@@ -59,17 +59,17 @@ namespace PhaseField
 
   template <int dim>
   void
-  StiffnessSquare<dim>::assemble(const double                         w,
-                                 const double                         s,
-                                 const TrilinosWrappers::MPI::Vector &d,
-                                 const TrilinosWrappers::MPI::Vector &e,
-                                 TrilinosWrappers::SparseMatrix      &a) const
+  StiffnessSquare<dim>::assemble(const double                    w,
+                                 const double                    s,
+                                 const Vector                   &d,
+                                 const Vector                   &e,
+                                 TrilinosWrappers::SparseMatrix &a) const
   {
     // T = M^-1 M[d] on the owned DoFs and on the columns of L
-    TrilinosWrappers::MPI::Vector t(d);
+    Vector t(d);
     t.scale(operators.lumped_mass);
     t.scale(operators.inverse_lumped_mass);
-    const Epetra_CrsMatrix &lm = operators.stiffness.trilinos_matrix();
+    const Epetra_CrsMatrix &lm = operators.stiffness_matrix().trilinos_matrix();
     Epetra_Vector           t_columns(lm.ColMap());
     t_columns.Import(t.trilinos_vector(), *column_import, Insert);
 
@@ -78,7 +78,7 @@ namespace PhaseField
     if (!share_pattern(a, stiffness_square))
       a.copy_from(stiffness_square);
     const CompressedRows square = compressed_rows(stiffness_square);
-    const CompressedRows l      = compressed_rows(operators.stiffness);
+    const CompressedRows l      = compressed_rows(operators.stiffness_matrix());
     const CompressedRows out    = compressed_rows(a);
     const int            n_rows = lm.NumMyRows();
     for (int k = 0; k < square.offsets[n_rows]; ++k)

@@ -276,9 +276,9 @@ namespace PhaseField
     /** The nested scheme of the biharmonic model with forcing @p f. */
     template <int dim>
     SchemeSettings
-    biharmonic_scheme(const BiharmonicParameters          &parameters,
-                      const double                         inner_tau,
-                      const TrilinosWrappers::MPI::Vector *f)
+    biharmonic_scheme(const BiharmonicParameters &parameters,
+                      const double                inner_tau,
+                      const Vector               *f)
     {
       SchemeSettings s;
       s.scheme                    = parameters.time.scheme;

@@ -238,7 +238,8 @@ namespace PhaseField
         std::vector<unsigned int> point_of_pixel(grid.size());
         for (unsigned int i = 0; i < grid.size(); ++i)
           point_of_pixel[pixel_index(grid.point(i), n)] = i;
-        Vector<double> target(dof_handler.n_dofs()), alpha(target.size());
+        dealii::Vector<double> target(dof_handler.n_dofs()),
+          alpha(target.size());
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
             {
@@ -265,10 +266,10 @@ namespace PhaseField
 
     template <int dim>
     void
-    write_picture(const Labelings<dim>                &labelings,
-                  const Discretization<dim>           &discretization,
-                  const TrilinosWrappers::MPI::Vector &u,
-                  const std::string                   &filename)
+    write_picture(const Labelings<dim>      &labelings,
+                  const Discretization<dim> &discretization,
+                  const Vector              &u,
+                  const std::string         &filename)
     {
       const MPI_Comm comm = discretization.get_mpi_communicator();
       if constexpr (dim == 2)
@@ -303,12 +304,12 @@ namespace PhaseField
     template void
     write_picture(const Labelings<2> &,
                   const Discretization<2> &,
-                  const TrilinosWrappers::MPI::Vector &,
+                  const Vector &,
                   const std::string &);
     template void
     write_picture(const Labelings<3> &,
                   const Discretization<3> &,
-                  const TrilinosWrappers::MPI::Vector &,
+                  const Vector &,
                   const std::string &);
   } // namespace ContourOutput
 } // namespace PhaseField

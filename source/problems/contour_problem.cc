@@ -232,7 +232,7 @@ namespace PhaseField
 
 
   template <int dim>
-  typename ContourProblem<dim>::Vector
+  Vector
   ContourProblem<dim>::ghosted_u(const BlockVector &state) const
   {
     const LumpedOperators<dim> &ops = this->discretization.get_operators();

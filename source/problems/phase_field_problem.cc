@@ -114,7 +114,7 @@ namespace PhaseField
 
 
   template <int dim>
-  typename PhaseFieldProblem<dim>::BlockVector
+  BlockVector
   PhaseFieldProblem<dim>::coarse_start_value()
   {
     BlockVector start     = solution;

@@ -29,7 +29,7 @@ namespace PhaseField
     , weights(coefficients)
     , old_u(old_u)
     , f_scale(objective_scale(coefficients, scaled))
-    , nested_step(discretization, coefficients, old_u)
+    , physics(discretization, coefficients, old_u)
   {}
 
 
@@ -46,7 +46,7 @@ namespace PhaseField
 
 
   template <int dim>
-  typename AugmentedLagrangianStep<dim>::BlockVector
+  BlockVector
   AugmentedLagrangianStep<dim>::make_point() const
   {
     return BlockVector(std::vector<IndexSet>(2, ops.locally_owned_dofs),
@@ -61,7 +61,7 @@ namespace PhaseField
   {
     // the nested step's outer energy is e_out / (2 eps); x = (U, V) has
     // the block indices of Field::U and Field::V
-    return f_scale * nested_step.outer_energy(x);
+    return f_scale * physics.outer_energy(x);
   }
 
 
@@ -87,8 +87,8 @@ namespace PhaseField
                      (f ? forcing_factor * f[i] : 0.));
         g.block(x_v).begin()[i] = f_scale * a_difference;
       }
-    nested_step.add_area_gradient(x.block(x_u), f_scale, g.block(x_u));
-    nested_step.zero_fixed_u(g.block(x_u));
+    physics.add_area_gradient(x.block(x_u), f_scale, g.block(x_u));
+    physics.zero_fixed_u(g.block(x_u));
     for (unsigned int b = 0; b < 2; ++b)
       ops.zero_constrained(g.block(b));
   }
@@ -112,11 +112,11 @@ namespace PhaseField
           f_scale * m[i] * ((1 + a) * du[i] - a * dv[i]);
         y.block(x_v).begin()[i] = f_scale * m[i] * a * (dv[i] - du[i]);
       }
-    nested_step.add_area_hessian_vmult(x.block(x_u),
-                                       d.block(x_u),
-                                       f_scale,
-                                       y.block(x_u));
-    nested_step.zero_fixed_u(y.block(x_u));
+    physics.add_area_hessian_vmult(x.block(x_u),
+                                   d.block(x_u),
+                                   f_scale,
+                                   y.block(x_u));
+    physics.zero_fixed_u(y.block(x_u));
     for (unsigned int b = 0; b < 2; ++b)
       ops.zero_constrained(y.block(b));
   }
@@ -128,25 +128,7 @@ namespace PhaseField
   AugmentedLagrangianStep<dim>::constraint(const BlockVector &x,
                                            Vector            &c) const
   {
-    nested_step.inner_residual(x.block(x_u), x.block(x_v), c);
-  }
-
-
-
-  template <int dim>
-  void
-  AugmentedLagrangianStep<dim>::k_vmult(const Vector &v,
-                                        const Vector &d,
-                                        Vector       &kd) const
-  {
-    // K(V) d = ttau L d + M[k(V)] d
-    ops.stiffness.vmult(kd, d);
-    kd *= weights.inner_tau;
-    const double      *m = ops.lumped_mass.begin();
-    const unsigned int n = d.locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      kd.begin()[i] += m[i] * weights.k(v.begin()[i]) * d.begin()[i];
-    ops.zero_constrained(kd);
+    physics.inner_residual(x.block(x_u), x.block(x_v), c);
   }
 
 
@@ -158,7 +140,7 @@ namespace PhaseField
                                                           Vector &jd) const
   {
     // c'(d) = -M d_U + K(V) d_V
-    k_vmult(x.block(x_v), d.block(x_v), jd);
+    physics.k_vmult(x.block(x_v), d.block(x_v), jd);
     const double      *m = ops.lumped_mass.begin();
     const unsigned int n = jd.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
@@ -174,11 +156,11 @@ namespace PhaseField
                                                            BlockVector &g) const
   {
     // c'^T y = (-M y, K(V) y)
-    k_vmult(x.block(x_v), y, g.block(x_v));
+    physics.k_vmult(x.block(x_v), y, g.block(x_v));
     g.block(x_u) = y;
     g.block(x_u).scale(ops.lumped_mass);
     g.block(x_u) *= -1;
-    nested_step.zero_fixed_u(g.block(x_u));
+    physics.zero_fixed_u(g.block(x_u));
     ops.zero_constrained(g.block(x_u));
   }
 
@@ -262,12 +244,11 @@ namespace PhaseField
   {
     // the multigrid keeps a reference to G
     schur_multigrid.reset();
-    nested_step.build_schur_factor(
-      schur_v, b, w, m, schur_factor, interface_mode);
-    schur_multigrid     = std::make_unique<SchurPreconditioner>(schur_factor,
+    physics.build_schur_factor(schur_v, b, w, m, schur_factor, interface_mode);
+    schur_multigrid     = std::make_unique<SchurPreconditioner>(*schur_factor,
                                                             ops.lumped_mass,
                                                             &interface_mode);
-    const double gamma  = NestedStep<dim>::schur_mass_shift;
+    const double gamma  = NestedPhysics<dim>::schur_mass_shift;
     schur_inverse_scale = gamma * gamma / m;
   }
 
@@ -283,7 +264,7 @@ namespace PhaseField
     // shift b, w = lambda and m = s a (class documentation)
     Vector free(ops.lumped_mass);
     free = 1;
-    nested_step.zero_fixed_u(free);
+    physics.zero_fixed_u(free);
     const auto nodal = [&](const double at_free, const double at_fixed) {
       Vector values(free);
       values *= at_free - at_fixed;
@@ -291,7 +272,9 @@ namespace PhaseField
       return values;
     };
     TrilinosWrappers::SparseMatrix k_hat;
-    nested_step.build_k(schur_v, 0., k_hat);
+    ops.stiffness_plus_weighted_mass(weights.inner_tau,
+                                     physics.k_weights(schur_v, 0.),
+                                     k_hat);
     Vector shift = nodal(-b, 0.);
     shift.scale(ops.lumped_mass);
     ops.add_to_diagonal(shift, k_hat);
@@ -336,7 +319,7 @@ namespace PhaseField
     // z_U = (beta M)^-1 (r_U + (s a M + lambda K) z_V)
     const double s_a      = f_scale * weights.a;
     const auto   coupling = [&](const Vector &in, Vector &out) {
-      k_vmult(schur_v, in, out);
+      physics.k_vmult(schur_v, in, out);
       out *= schur_penalty;
       Vector mass_part(in);
       mass_part.scale(ops.lumped_mass);
@@ -355,7 +338,7 @@ namespace PhaseField
     cz.scale(ops.inverse_lumped_mass);
     cz /= schur_beta;
     ops.zero_constrained(cz);
-    nested_step.zero_fixed_u(cz);
+    physics.zero_fixed_u(cz);
     z.block(x_u) = cz;
   }
 
@@ -382,11 +365,11 @@ namespace PhaseField
     : settings(settings)
     , discretization(discretization)
     , pcout(pcout)
-    , nested(settings, discretization, pcout)
+    , model(settings, discretization)
+    , solver_type(LinearSolver::resolve_type(settings.linear_solver.type, dim))
     , next_penalty(settings.augmented_lagrangian.initial_penalty)
   {
-    if (LinearSolver::resolve_type(settings.linear_solver.type, dim) ==
-        LinearSolverType::direct)
+    if (solver_type == LinearSolverType::direct)
       schur_solver = std::make_unique<LinearSolver>(
         LinearSolverType::direct,
         settings.linear_solver.relative_tolerance,
@@ -431,7 +414,7 @@ namespace PhaseField
   std::vector<std::string>
   AugmentedLagrangianScheme<dim>::warnings() const
   {
-    return nested.warnings();
+    return model.warnings();
   }
 
 
@@ -442,7 +425,7 @@ namespace PhaseField
                                              const double tau)
   {
     // V from the inner problem (Algorithm 3.1), P = P0 at every node
-    nested.initialize(state, tau);
+    model.initialize(state, tau, solver_type);
     state.block(Field::P) = settings.augmented_lagrangian.initial_multiplier;
     discretization.distribute_constraints(state);
     next_penalty = settings.augmented_lagrangian.initial_penalty;
@@ -457,7 +440,7 @@ namespace PhaseField
                                                const double tau) const
   {
     // P is proportional to tau, as in the nested scheme
-    nested.prepare_step(state, state_tau, tau);
+    model.prepare_step(state, state_tau, tau);
   }
 
 
@@ -487,7 +470,7 @@ namespace PhaseField
                                           const double       tau)
   {
     AugmentedLagrangianStep<dim> step(discretization,
-                                      nested.coefficients(tau),
+                                      model.coefficients(tau),
                                       old_state.block(Field::U),
                                       settings.augmented_lagrangian.scaled);
     if (schur_solver)
@@ -596,8 +579,8 @@ namespace PhaseField
   void
   AugmentedLagrangianScheme<dim>::before_remesh()
   {
-    // the solver only: the penalty carries over re-meshing
-    nested.before_remesh();
+    // nothing: the penalty carries over re-meshing, and the Schur
+    // preconditioner is set up anew in every trust-region iteration
   }
 
 
@@ -607,12 +590,13 @@ namespace PhaseField
   AugmentedLagrangianScheme<dim>::after_remesh(BlockVector &state,
                                                const double tau)
   {
-    nested.after_remesh(state, tau);
-    if (settings.outer_energy.has_restoration_terms())
-      // the nested scheme re-solved V and its adjoint P for the new mesh;
-      // the multiplier of the augmented Lagrangian is -2s times that P
-      state.block(Field::P) *= -AugmentedLagrangianStep<dim>::objective_scale(
-        nested.coefficients(tau), settings.augmented_lagrangian.scaled);
+    if (!settings.outer_energy.has_restoration_terms())
+      return;
+    // V and its adjoint P re-solved for the new mesh (as the nested scheme
+    // does); the multiplier of the augmented Lagrangian is -2s times that P
+    model.solve_inner_problem(state, tau, solver_type);
+    state.block(Field::P) *= -AugmentedLagrangianStep<dim>::objective_scale(
+      model.coefficients(tau), settings.augmented_lagrangian.scaled);
   }
 
 
@@ -621,7 +605,6 @@ namespace PhaseField
   void
   AugmentedLagrangianScheme<dim>::reset_solver()
   {
-    nested.reset_solver();
     next_penalty = settings.augmented_lagrangian.initial_penalty;
   }
 
@@ -631,7 +614,7 @@ namespace PhaseField
   Energies
   AugmentedLagrangianScheme<dim>::energies(const BlockVector &state) const
   {
-    return nested.energies(state);
+    return model.energies(state);
   }
 
 
@@ -641,7 +624,7 @@ namespace PhaseField
   AugmentedLagrangianScheme<dim>::curvature(const BlockVector &state,
                                             Vector            &curvature) const
   {
-    nested.curvature(state, curvature);
+    model.curvature(state, curvature);
   }
 
 
@@ -651,7 +634,7 @@ namespace PhaseField
   AugmentedLagrangianScheme<dim>::energy_law_energy(
     const BlockVector &state) const
   {
-    return nested.energy_law_energy(state);
+    return model.energy_law_energy(state);
   }
 
 
@@ -662,7 +645,7 @@ namespace PhaseField
                                               const BlockVector &state,
                                               const double       tau) const
   {
-    return nested.dissipation(old_state, state, tau);
+    return model.dissipation(old_state, state, tau);
   }
 
 

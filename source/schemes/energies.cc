@@ -12,8 +12,7 @@ namespace PhaseField
     /** Int Psi(U) and Int (1-U)/2, both lumped, summed over all ranks. */
     template <int dim>
     std::pair<double, double>
-    potential_and_inside(const LumpedOperators<dim>          &operators,
-                         const TrilinosWrappers::MPI::Vector &u)
+    potential_and_inside(const LumpedOperators<dim> &operators, const Vector &u)
     {
       const double      *m         = operators.lumped_mass.begin();
       const unsigned int n         = u.locally_owned_size();
@@ -34,9 +33,9 @@ namespace PhaseField
 
   template <int dim>
   double
-  area_functional(const LumpedOperators<dim>          &operators,
-                  const TrilinosWrappers::MPI::Vector &u,
-                  const double                         epsilon)
+  area_functional(const LumpedOperators<dim> &operators,
+                  const Vector               &u,
+                  const double                epsilon)
   {
     const double potential = potential_and_inside(operators, u).first;
     const double gradient  = operators.stiffness_product(u);
@@ -47,9 +46,9 @@ namespace PhaseField
 
   template <int dim>
   Energies
-  phase_field_energies(const LumpedOperators<dim>          &operators,
-                       const TrilinosWrappers::MPI::Vector &u,
-                       const double                         epsilon)
+  phase_field_energies(const LumpedOperators<dim> &operators,
+                       const Vector               &u,
+                       const double                epsilon)
   {
     const auto [potential, inside] = potential_and_inside(operators, u);
     const double gradient          = operators.stiffness_product(u);
@@ -65,18 +64,14 @@ namespace PhaseField
 
   template Energies
   phase_field_energies(const LumpedOperators<2> &,
-                       const TrilinosWrappers::MPI::Vector &,
+                       const Vector &,
                        const double);
   template Energies
   phase_field_energies(const LumpedOperators<3> &,
-                       const TrilinosWrappers::MPI::Vector &,
+                       const Vector &,
                        const double);
   template double
-  area_functional(const LumpedOperators<2> &,
-                  const TrilinosWrappers::MPI::Vector &,
-                  const double);
+  area_functional(const LumpedOperators<2> &, const Vector &, const double);
   template double
-  area_functional(const LumpedOperators<3> &,
-                  const TrilinosWrappers::MPI::Vector &,
-                  const double);
+  area_functional(const LumpedOperators<3> &, const Vector &, const double);
 } // namespace PhaseField

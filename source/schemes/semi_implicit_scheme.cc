@@ -52,9 +52,9 @@ namespace PhaseField
     Vector &r_f = r.block(F::F);
 
     // stiffness parts first
-    ops.stiffness.vmult(r_u, G);
+    ops.stiffness_operator().vmult(r_u, G);
     r_u *= -tau / (2 * epsilon);
-    ops.stiffness.vmult(r_f, z.block(F::U));
+    ops.stiffness_operator().vmult(r_f, z.block(F::U));
     r_f *= epsilon * epsilon;
 
     const double       reaction = tau / std::pow(epsilon, 3);
@@ -93,7 +93,7 @@ namespace PhaseField
     Vector G, g, lg;
     nonlinear_coefficients(z, G, g);
     lg.reinit(G, true);
-    ops.stiffness.vmult(lg, G);
+    ops.stiffness_operator().vmult(lg, G);
     ops.zero_constrained(lg);
     const Vector &u = z.block(F::U);
     const Vector &f = z.block(F::F);
@@ -176,9 +176,9 @@ namespace PhaseField
     const Vector &xf       = x.block(F::F);
     Vector       &yu       = y.block(F::U);
     Vector       &yf       = y.block(F::F);
-    ops.stiffness.vmult(yu, xf);
+    ops.stiffness_operator().vmult(yu, xf);
     yu *= -tau / (2 * epsilon);
-    ops.stiffness.vmult(yf, xu);
+    ops.stiffness_operator().vmult(yf, xu);
     yf *= epsilon * epsilon;
     const double      *m  = ops.lumped_mass.begin();
     const double      *u  = z.block(F::U).begin();
@@ -206,7 +206,7 @@ namespace PhaseField
     // R_F = 0: F = (eps M)^-1 (2 M[1-U^2] U - eps^2 L U)
     const Vector &u = z.block(F::U);
     Vector       &f = z.block(F::F);
-    ops.stiffness.vmult(f, u);
+    ops.stiffness_operator().vmult(f, u);
     f *= -epsilon * epsilon;
     const double      *m = ops.lumped_mass.begin();
     const unsigned int n = u.locally_owned_size();

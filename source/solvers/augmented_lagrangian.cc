@@ -6,9 +6,6 @@
 
 namespace PhaseField
 {
-  using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-  using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
   AugmentedLagrangianObjective::AugmentedLagrangianObjective(
     ConstrainedMinimizationProblem &problem,
     const Vector                   &p,

@@ -12,8 +12,6 @@ namespace PhaseField
 
   namespace
   {
-    using BlockVector = TrilinosWrappers::MPI::BlockVector;
-
     // sufficient decrease of the Armijo condition
     constexpr double armijo = 1e-4;
     // the Levenberg-Marquardt shift, in units of the mass matrix: the
@@ -309,12 +307,12 @@ namespace PhaseField
 
 
   StepReport
-  minimizing_newton_solve(MinimizationProblem                &problem,
-                          TrilinosWrappers::MPI::BlockVector &z,
-                          const NewtonControl                &control,
-                          LinearSolver                       &linear_solver,
-                          const ConditionalOStream           &pcout,
-                          const bool                          verbose)
+  minimizing_newton_solve(MinimizationProblem      &problem,
+                          BlockVector              &z,
+                          const NewtonControl      &control,
+                          LinearSolver             &linear_solver,
+                          const ConditionalOStream &pcout,
+                          const bool                verbose)
   {
     return DescentNewton(problem, z, control, linear_solver, pcout, verbose)
       .run();

@@ -40,7 +40,7 @@ namespace PhaseField
       mumps->SetICNTL(14, pivoting_workspace_percent);
     const int symbolic = solver->SymbolicFactorization();
     ++analysis_count;
-    const int numeric  = symbolic == 0 ? solver->NumericFactorization() : 0;
+    const int numeric = symbolic == 0 ? solver->NumericFactorization() : 0;
     AssertThrow(symbolic == 0 && numeric == 0,
                 ExcMessage("MUMPS could not factorise the Newton matrix "
                            "(error " +
@@ -79,8 +79,7 @@ namespace PhaseField
 
 
   void
-  DirectFactorization::vmult(TrilinosWrappers::MPI::Vector       &dst,
-                             const TrilinosWrappers::MPI::Vector &src) const
+  DirectFactorization::vmult(Vector &dst, const Vector &src) const
   {
     problem->SetLHS(&dst.trilinos_vector());
     problem->SetRHS(const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));

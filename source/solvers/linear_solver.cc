@@ -65,8 +65,8 @@ namespace PhaseField
 
   unsigned int
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
-                      TrilinosWrappers::MPI::Vector        &solution,
-                      const TrilinosWrappers::MPI::Vector  &rhs)
+                      Vector                               &solution,
+                      const Vector                         &rhs)
   {
     if (solver_type == LinearSolverType::direct)
       {
@@ -90,24 +90,24 @@ namespace PhaseField
 
 
   unsigned int
-  LinearSolver::solve(const StiffnessPlusDiagonal         &op,
-                      TrilinosWrappers::MPI::Vector       &solution,
-                      const TrilinosWrappers::MPI::Vector &rhs)
+  LinearSolver::solve(const ShiftedStiffness &op,
+                      Vector                 &solution,
+                      const Vector           &rhs)
   {
     AssertThrow(solver_type == LinearSolverType::iterative,
                 ExcMessage("A direct solver needs the matrix, not an "
                            "operator."));
-    return solve_with_multigrid(op, op, solution, rhs);
+    return solve_with_multigrid(op, multigrid_rows(op), solution, rhs);
   }
 
 
 
   template <typename Operator>
   unsigned int
-  LinearSolver::solve_with_multigrid(const Operator                &op,
-                                     const Epetra_RowMatrix        &rows,
-                                     TrilinosWrappers::MPI::Vector &solution,
-                                     const TrilinosWrappers::MPI::Vector &rhs)
+  LinearSolver::solve_with_multigrid(const Operator         &op,
+                                     const Epetra_RowMatrix &rows,
+                                     Vector                 &solution,
+                                     const Vector           &rhs)
   {
     SolverControl control(max_iterations,
                           tolerance * rhs.l2_norm(),
@@ -118,7 +118,7 @@ namespace PhaseField
     initialize_multigrid(amg, rows);
     if (symmetric)
       {
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        SolverCG<Vector> cg(control);
         cg.solve(op, solution, rhs, amg);
       }
     else
@@ -131,8 +131,8 @@ namespace PhaseField
 
   unsigned int
   LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
-                             TrilinosWrappers::MPI::Vector        &solution,
-                             const TrilinosWrappers::MPI::Vector  &rhs)
+                             Vector                               &solution,
+                             const Vector                         &rhs)
   {
     const double tolerance_norm = tolerance * rhs.l2_norm();
     const bool fresh = !factorization || factorization->size() != matrix.m() ||
@@ -189,30 +189,28 @@ namespace PhaseField
 
   template <typename Operator, typename Preconditioner>
   void
-  LinearSolver::gmres_solve(const Operator                      &op,
-                            TrilinosWrappers::MPI::Vector       &solution,
-                            const TrilinosWrappers::MPI::Vector &rhs,
-                            const Preconditioner                &preconditioner,
-                            SolverControl                       &control) const
+  LinearSolver::gmres_solve(const Operator       &op,
+                            Vector               &solution,
+                            const Vector         &rhs,
+                            const Preconditioner &preconditioner,
+                            SolverControl        &control) const
   {
-    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-      control,
-      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-        gmres_restart, /*right_preconditioning=*/true));
+    SolverGMRES<Vector> gmres(control,
+                              SolverGMRES<Vector>::AdditionalData(
+                                gmres_restart, /*right_preconditioning=*/true));
     gmres.solve(op, solution, rhs, preconditioner);
   }
 
   unsigned int
-  LinearSolver::solve_product_form(
-    const StiffnessPlusDiagonal         &k_hat,
-    const double                         w,
-    const TrilinosWrappers::MPI::Vector &d,
-    const StiffnessPlusDiagonal         &g,
-    const TrilinosWrappers::MPI::Vector &mass,
-    const TrilinosWrappers::MPI::Vector &inverse_mass,
-    TrilinosWrappers::MPI::Vector       &solution,
-    const TrilinosWrappers::MPI::Vector &rhs,
-    const TrilinosWrappers::MPI::Vector *interface_mode)
+  LinearSolver::solve_product_form(const ShiftedStiffness &k_hat,
+                                   const double            w,
+                                   const Vector           &d,
+                                   const ShiftedStiffness &g,
+                                   const Vector           &mass,
+                                   const Vector           &inverse_mass,
+                                   Vector                 &solution,
+                                   const Vector           &rhs,
+                                   const Vector           *interface_mode)
   {
     Assert(solver_type == LinearSolverType::iterative, ExcInternalError());
     const ProductFormMatrix s(k_hat, w, d, inverse_mass);
@@ -258,16 +256,16 @@ namespace PhaseField
 
 
   unsigned int
-  LinearSolver::cg_solve_product_form(const ProductFormMatrix       &s,
-                                      TrilinosWrappers::MPI::Vector &solution,
-                                      const TrilinosWrappers::MPI::Vector &rhs,
-                                      const unsigned int iteration_limit)
+  LinearSolver::cg_solve_product_form(const ProductFormMatrix &s,
+                                      Vector                  &solution,
+                                      const Vector            &rhs,
+                                      const unsigned int       iteration_limit)
   {
-    SolverControl                           control(iteration_limit,
+    SolverControl    control(iteration_limit,
                           tolerance * rhs.l2_norm(),
                           false,
                           false);
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    SolverCG<Vector> cg(control);
     solution = 0;
     cg.solve(s, solution, rhs, *schur_preconditioner);
     last_iterations = control.last_step();
@@ -295,13 +293,12 @@ namespace PhaseField
 
 
   bool
-  LinearSolver::interface_moved(
-    const TrilinosWrappers::MPI::Vector *interface_mode) const
+  LinearSolver::interface_moved(const Vector *interface_mode) const
   {
     if (interface_mode == nullptr ||
         setup_interface_mode.size() != interface_mode->size())
       return interface_mode != nullptr;
-    TrilinosWrappers::MPI::Vector change(*interface_mode);
+    Vector change(*interface_mode);
     change -= setup_interface_mode;
     return change.linfty_norm() > interface_mode_tolerance;
   }

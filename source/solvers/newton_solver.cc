@@ -34,15 +34,15 @@ namespace PhaseField
      * the full step. @p residual holds R(trial) on return.
      */
     Backtracking
-    backtrack(NonlinearSystem                          &system,
-              const TrilinosWrappers::MPI::BlockVector &z,
-              const TrilinosWrappers::MPI::BlockVector &update,
-              TrilinosWrappers::MPI::BlockVector       &trial,
-              TrilinosWrappers::MPI::BlockVector       &residual,
-              const NewtonControl                      &control,
-              const double                              norm,
-              const double                              target,
-              const bool                                may_relax)
+    backtrack(NonlinearSystem     &system,
+              const BlockVector   &z,
+              const BlockVector   &update,
+              BlockVector         &trial,
+              BlockVector         &residual,
+              const NewtonControl &control,
+              const double         norm,
+              const double         target,
+              const bool           may_relax)
     {
       Backtracking b{0, 1, std::numeric_limits<double>::quiet_NaN(), 0};
       for (; b.damping <= control.max_damping_steps;
@@ -73,13 +73,13 @@ namespace PhaseField
      * changed) if no damped update was accepted.
      */
     bool
-    accept_update(const Backtracking                       &step,
-                  const unsigned int                        it,
-                  const NewtonControl                      &control,
-                  const ConditionalOStream                 &pcout,
-                  const TrilinosWrappers::MPI::BlockVector &trial,
-                  TrilinosWrappers::MPI::BlockVector       &z,
-                  double                                   &norm)
+    accept_update(const Backtracking       &step,
+                  const unsigned int        it,
+                  const NewtonControl      &control,
+                  const ConditionalOStream &pcout,
+                  const BlockVector        &trial,
+                  BlockVector              &z,
+                  double                   &norm)
     {
       if (step.damping > control.max_damping_steps)
         {
@@ -113,8 +113,6 @@ namespace PhaseField
     class Watchdog
     {
     public:
-      using BlockVector = TrilinosWrappers::MPI::BlockVector;
-
       /** Whether the next full update may raise the norm. */
       bool
       may_relax() const
@@ -204,14 +202,13 @@ namespace PhaseField
 
 
   StepReport
-  newton_solve(NonlinearSystem                    &system,
-               TrilinosWrappers::MPI::BlockVector &z,
-               const NewtonControl                &control,
-               LinearSolver                       &linear_solver,
-               const ConditionalOStream           &pcout,
-               const bool                          verbose)
+  newton_solve(NonlinearSystem          &system,
+               BlockVector              &z,
+               const NewtonControl      &control,
+               LinearSolver             &linear_solver,
+               const ConditionalOStream &pcout,
+               const bool                verbose)
   {
-    using BlockVector = TrilinosWrappers::MPI::BlockVector;
     BlockVector residual(z), update(z), trial(z);
 
     StepReport   report;

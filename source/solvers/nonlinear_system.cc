@@ -34,14 +34,14 @@ namespace PhaseField
   namespace internal
   {
     double
-    start_newton(const NonlinearSystem                    &system,
-                 const TrilinosWrappers::MPI::BlockVector &z,
-                 TrilinosWrappers::MPI::BlockVector       &residual,
-                 const NewtonControl                      &control,
-                 const ConditionalOStream                 &pcout,
-                 const bool                                verbose,
-                 double                                   &norm,
-                 StepReport                               &report)
+    start_newton(const NonlinearSystem    &system,
+                 const BlockVector        &z,
+                 BlockVector              &residual,
+                 const NewtonControl      &control,
+                 const ConditionalOStream &pcout,
+                 const bool                verbose,
+                 double                   &norm,
+                 StepReport               &report)
     {
       system.residual(z, residual);
       norm                         = system.residual_norm(residual);

@@ -37,12 +37,24 @@ namespace PhaseField
 
 
 
+  const Epetra_RowMatrix &
+  multigrid_rows(const ShiftedStiffness &op)
+  {
+    const auto *rows = dynamic_cast<const Epetra_RowMatrix *>(&op);
+    AssertThrow(rows != nullptr,
+                dealii::ExcMessage(
+                  "The algebraic multigrid reads the rows of the operator "
+                  "f L + D, which this stiffness backend does not store."));
+    return *rows;
+  }
+
+
+
   void
-  initialize_multigrid(
-    dealii::TrilinosWrappers::PreconditionAMG   &multigrid,
-    const Epetra_RowMatrix                      &matrix,
-    const dealii::TrilinosWrappers::MPI::Vector *interface_mode,
-    const unsigned int                           smoother_sweeps)
+  initialize_multigrid(dealii::TrilinosWrappers::PreconditionAMG &multigrid,
+                       const Epetra_RowMatrix                    &matrix,
+                       const Vector      *interface_mode,
+                       const unsigned int smoother_sweeps)
   {
     assert_positive_diagonal(matrix);
     dealii::TrilinosWrappers::PreconditionAMG::AdditionalData settings;

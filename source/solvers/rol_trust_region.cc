@@ -9,8 +9,7 @@ namespace PhaseField
 {
   namespace
   {
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-    using Adaptor     = dealii::Rol::VectorAdaptor<BlockVector>;
+    using Adaptor = dealii::Rol::VectorAdaptor<BlockVector>;
 
     /** The block vector of a ROL vector made by this file. */
     const BlockVector &

@@ -5,8 +5,6 @@
 
 namespace PhaseField
 {
-  using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
   namespace
   {
     /**

@@ -132,10 +132,10 @@ namespace PhaseField
 
     template <int dim>
     void
-    write(const std::string                                &directory,
-          const Discretization<dim>                        &discretization,
-          const dealii::TrilinosWrappers::MPI::BlockVector &state,
-          const State                                      &time_stepping_state)
+    write(const std::string         &directory,
+          const Discretization<dim> &discretization,
+          const BlockVector         &state,
+          const State               &time_stepping_state)
     {
       const MPI_Comm    comm = discretization.get_mpi_communicator();
       const std::string name =
@@ -229,12 +229,12 @@ namespace PhaseField
     template void
     write<2>(const std::string &,
              const Discretization<2> &,
-             const dealii::TrilinosWrappers::MPI::BlockVector &,
+             const BlockVector &,
              const State &);
     template void
     write<3>(const std::string &,
              const Discretization<3> &,
-             const dealii::TrilinosWrappers::MPI::BlockVector &,
+             const BlockVector &,
              const State &);
   } // namespace Checkpoint
 } // namespace PhaseField

@@ -12,7 +12,7 @@ namespace PhaseField
   {
     /** Number of non-finite entries of @p v on all ranks. */
     unsigned long
-    n_non_finite(const TrilinosWrappers::MPI::Vector &v)
+    n_non_finite(const Vector &v)
     {
       const unsigned long local =
         std::count_if(v.begin(), v.end(), [](const double x) {
@@ -26,9 +26,8 @@ namespace PhaseField
 
   void
   check_output_fields_finite(
-    const unsigned int step,
-    const std::vector<
-      std::pair<std::string, const TrilinosWrappers::MPI::Vector *>> &fields)
+    const unsigned int                                         step,
+    const std::vector<std::pair<std::string, const Vector *>> &fields)
   {
     for (const auto &[name, vector] : fields)
       {

@@ -12,11 +12,11 @@ namespace PhaseField
      * distance to the interface in units of the profile's width where
      * U = tanh(d/eps).
      */
-    StartValuePredictor::Vector
-    profile_variable(const StartValuePredictor::Vector &u)
+    Vector
+    profile_variable(const Vector &u)
     {
-      constexpr double            largest = 1 - Constants::roundoff;
-      StartValuePredictor::Vector phi(u);
+      constexpr double largest = 1 - Constants::roundoff;
+      Vector           phi(u);
       for (double &value : phi)
         value = std::atanh(std::clamp(value, -largest, largest));
       return phi;
@@ -76,7 +76,7 @@ namespace PhaseField
 
 
 
-  std::vector<StartValuePredictor::BlockVector *>
+  std::vector<BlockVector *>
   StartValuePredictor::history()
   {
     if (n_changes == 0)

@@ -389,7 +389,7 @@ namespace PhaseField
 
 
   template <int dim>
-  std::vector<typename TimeLoop<dim>::BlockVector *>
+  std::vector<BlockVector *>
   TimeLoop<dim>::with_history(std::vector<BlockVector *> fields)
   {
     for (BlockVector *v : predictor.history())

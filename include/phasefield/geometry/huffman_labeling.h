@@ -6,7 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <string>
 #include <vector>
 
@@ -116,9 +116,9 @@ namespace PhaseField
      */
     template <int dim>
     std::vector<double>
-    labeling(const dealii::DoFHandler<dim>               &dof_handler,
-             const dealii::TrilinosWrappers::MPI::Vector &u,
-             const LabelingGrid<dim>                     &grid);
+    labeling(const dealii::DoFHandler<dim> &dof_handler,
+             const Vector                  &u,
+             const LabelingGrid<dim>       &grid);
 
     /**
      * The derivative of sum_q r_q alpha[u](x'_q) with respect to the DoF
@@ -133,12 +133,12 @@ namespace PhaseField
     template <int dim>
     void
     add_labeling_derivative(
-      const dealii::DoFHandler<dim>               &dof_handler,
-      const dealii::AffineConstraints<double>     &constraints,
-      const dealii::TrilinosWrappers::MPI::Vector &u,
-      const LabelingGrid<dim>                     &grid,
-      const std::vector<double>                   &r,
-      dealii::TrilinosWrappers::MPI::Vector       &gradient);
+      const dealii::DoFHandler<dim>           &dof_handler,
+      const dealii::AffineConstraints<double> &constraints,
+      const Vector                            &u,
+      const LabelingGrid<dim>                 &grid,
+      const std::vector<double>               &r,
+      Vector                                  &gradient);
 
     /**
      * The labeling, at the points of @p grid, of the Q1 interpolant of

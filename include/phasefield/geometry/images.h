@@ -3,8 +3,8 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <string>
 #include <vector>
@@ -136,8 +136,8 @@ namespace PhaseField
      */
     std::vector<double>
     sample_on_pixel_grid(const dealii::DoFHandler<2> &dof_handler,
-                         const dealii::TrilinosWrappers::MPI::Vector &u,
-                         const unsigned int                           n);
+                         const Vector                &u,
+                         const unsigned int           n);
   } // namespace Images
 } // namespace PhaseField
 

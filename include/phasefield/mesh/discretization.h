@@ -7,9 +7,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/numerics/vector_tools_common.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/lumped_operators.h>
 #include <string>
@@ -46,9 +45,6 @@ namespace PhaseField
   class Discretization
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     /** What the discretisation is built from. */
     struct Settings
     {

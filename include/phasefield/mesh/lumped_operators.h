@@ -6,9 +6,11 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
-#include <phasefield/mesh/stiffness_plus_diagonal.h>
+#include <phasefield/mesh/stiffness_operator.h>
+#include <phasefield/mesh/trilinos_stiffness.h>
 #include <vector>
 
 namespace PhaseField
@@ -53,26 +55,17 @@ namespace PhaseField
     release();
 
     /** Diagonal of the lumped mass matrix (zero at constrained DoFs). */
-    dealii::TrilinosWrappers::MPI::Vector lumped_mass;
+    Vector lumped_mass;
 
     /**
      * Inverse of the lumped mass. At constrained DoFs, where the mass is
      * zero, it holds the inverse of a typical cell mass so that the
      * reduced systems stay regular; all residual entries there are zero.
      */
-    dealii::TrilinosWrappers::MPI::Vector inverse_lumped_mass;
-
-    /** Stiffness matrix, condensed. */
-    dealii::TrilinosWrappers::SparseMatrix stiffness;
+    Vector inverse_lumped_mass;
 
     /** Local indices (into the locally owned range) of constrained DoFs. */
     std::vector<unsigned int> constrained_local_indices;
-
-    /**
-     * For every locally owned row of the stiffness matrix, the index of
-     * its diagonal entry in compressed_rows(stiffness).values.
-     */
-    std::vector<int> stiffness_diagonal;
 
     dealii::IndexSet locally_owned_dofs;
     dealii::IndexSet locally_relevant_dofs;
@@ -85,44 +78,63 @@ namespace PhaseField
      */
     void
     stiffness_plus_weighted_mass(
-      const double                                 stiffness_factor,
-      const dealii::TrilinosWrappers::MPI::Vector &nodal_weight,
-      dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
+      const double                            stiffness_factor,
+      const Vector                           &nodal_weight,
+      dealii::TrilinosWrappers::SparseMatrix &matrix) const;
 
     /**
-     * The same operator as an @p op that applies L (which it references)
-     * instead of storing the matrix.
+     * The same operator as an @p op that applies L
+     * (StiffnessOperator::shift(): refilled in place if @p op holds one
+     * already) instead of storing the matrix.
      */
     void
-    stiffness_plus_weighted_mass(
-      const double                                 stiffness_factor,
-      const dealii::TrilinosWrappers::MPI::Vector &nodal_weight,
-      StiffnessPlusDiagonal                       &op) const;
+    stiffness_plus_weighted_mass(const double  stiffness_factor,
+                                 const Vector &nodal_weight,
+                                 std::unique_ptr<ShiftedStiffness> &op) const;
+
+    /**
+     * The stiffness operator L: what schemes apply (the seam to the
+     * linear-algebra backend).
+     */
+    const StiffnessOperator &
+    stiffness_operator() const
+    {
+      return stiffness_backend;
+    }
+
+    /**
+     * The assembled stiffness matrix, for what needs its entries: the
+     * direct solvers' matrices (StiffnessSquare, the 3-field Jacobian).
+     */
+    const dealii::TrilinosWrappers::SparseMatrix &
+    stiffness_matrix() const
+    {
+      return stiffness_backend.matrix;
+    }
 
     /**
      * Add @p values (one per locally owned DoF) to the diagonal of
      * @p matrix, whose sparsity pattern contains the diagonal, and compress.
      */
     void
-    add_to_diagonal(const dealii::TrilinosWrappers::MPI::Vector &values,
-                    dealii::TrilinosWrappers::SparseMatrix      &matrix) const;
+    add_to_diagonal(const Vector                           &values,
+                    dealii::TrilinosWrappers::SparseMatrix &matrix) const;
 
     /** Set all constrained entries of @p vector to zero. */
     void
-    zero_constrained(dealii::TrilinosWrappers::MPI::Vector &vector) const;
+    zero_constrained(Vector &vector) const;
 
     /** (x, y)_M = sum_i m_i x_i y_i. */
     double
-    mass_product(const dealii::TrilinosWrappers::MPI::Vector &x,
-                 const dealii::TrilinosWrappers::MPI::Vector &y) const;
+    mass_product(const Vector &x, const Vector &y) const;
 
     /** x^T L x over the unconstrained DoFs, i.e. Int |grad x_h|^2. */
     double
-    stiffness_product(const dealii::TrilinosWrappers::MPI::Vector &x) const;
+    stiffness_product(const Vector &x) const;
 
     /** sqrt(r^T M^-1 r): the L2 norm of the function that r represents. */
     double
-    dual_norm(const dealii::TrilinosWrappers::MPI::Vector &r) const;
+    dual_norm(const Vector &r) const;
 
   private:
     /**
@@ -144,9 +156,8 @@ namespace PhaseField
       const dealii::AffineConstraints<double> &constraints,
       const double                             min_cell_mass);
 
-    /** stiffness_diagonal of the assembled stiffness matrix. */
-    void
-    set_stiffness_diagonal();
+    /** L as an assembled Trilinos matrix. */
+    TrilinosStiffness stiffness_backend;
   };
   /**
    * Epetra's compressed row storage of the locally owned rows of a

@@ -4,7 +4,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 
 namespace PhaseField
 {
@@ -43,11 +43,11 @@ namespace PhaseField
     template <int dim>
     bool
     flag_cells_from_phase_field(const dealii::DoFHandler<dim> &dof_handler,
-                                const dealii::TrilinosWrappers::MPI::Vector &u,
-                                const double       band_width,
-                                const unsigned int finest_level,
-                                const unsigned int coarsest_level,
-                                const double       coarsening_band_width = 0);
+                                const Vector                  &u,
+                                const double                   band_width,
+                                const unsigned int             finest_level,
+                                const unsigned int             coarsest_level,
+                                const double coarsening_band_width = 0);
 
     /**
      * Whether the mesh fits the band of the phase field @p u (ghosted)
@@ -60,11 +60,11 @@ namespace PhaseField
      */
     template <int dim>
     bool
-    band_fits(const dealii::DoFHandler<dim>               &dof_handler,
-              const dealii::TrilinosWrappers::MPI::Vector &u,
-              const double                                 inner_width,
-              const double                                 outer_width,
-              const unsigned int                           finest_level);
+    band_fits(const dealii::DoFHandler<dim> &dof_handler,
+              const Vector                  &u,
+              const double                   inner_width,
+              const double                   outer_width,
+              const unsigned int             finest_level);
   } // namespace NarrowBand
 } // namespace PhaseField
 

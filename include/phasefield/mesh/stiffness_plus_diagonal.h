@@ -3,7 +3,8 @@
 
 #include <Epetra_RowMatrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
+#include <phasefield/mesh/stiffness_operator.h>
 
 namespace PhaseField
 {
@@ -25,7 +26,7 @@ namespace PhaseField
    * one, as a refilled sparse matrix would be. The scaling and inverse
    * functions of Epetra_RowMatrix are not provided (they return -1).
    */
-  class StiffnessPlusDiagonal : public Epetra_RowMatrix
+  class StiffnessPlusDiagonal : public Epetra_RowMatrix, public ShiftedStiffness
   {
   public:
     /**
@@ -36,20 +37,15 @@ namespace PhaseField
     void
     reinit(const dealii::TrilinosWrappers::SparseMatrix &stiffness,
            const double                                  stiffness_factor,
-           dealii::TrilinosWrappers::MPI::Vector        &diagonal);
+           Vector                                       &diagonal);
 
     /** @p dst = (f L + D) @p src. */
     void
-    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
-          const dealii::TrilinosWrappers::MPI::Vector &src) const;
+    vmult(Vector &dst, const Vector &src) const override;
 
-    /** Whether reinit() has not been called yet. */
-    bool
-    empty() const;
-
-    /** The number of rows. */
+    /** The number of rows (0 before reinit()). */
     dealii::types::global_dof_index
-    m() const;
+    m() const override;
 
     /** @name The Epetra_RowMatrix interface (read by ML) */
     /** @{ */
@@ -150,7 +146,7 @@ namespace PhaseField
 
     const dealii::TrilinosWrappers::SparseMatrix *stiffness        = nullptr;
     double                                        stiffness_factor = 0;
-    dealii::TrilinosWrappers::MPI::Vector         diagonal;
+    Vector                                        diagonal;
   };
 } // namespace PhaseField
 

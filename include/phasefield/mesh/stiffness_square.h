@@ -2,8 +2,8 @@
 #define phasefield_stiffness_square_h
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/mesh/lumped_operators.h>
 #include <vector>
 
@@ -49,11 +49,11 @@ namespace PhaseField
      * are written.
      */
     void
-    assemble(const double                                 w,
-             const double                                 s,
-             const dealii::TrilinosWrappers::MPI::Vector &d,
-             const dealii::TrilinosWrappers::MPI::Vector &e,
-             dealii::TrilinosWrappers::SparseMatrix      &a) const;
+    assemble(const double                            w,
+             const double                            s,
+             const Vector                           &d,
+             const Vector                           &e,
+             dealii::TrilinosWrappers::SparseMatrix &a) const;
 
   private:
     const LumpedOperators<dim> &operators;

@@ -4,11 +4,10 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <map>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/problems/biharmonic_parameters.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
@@ -128,9 +127,6 @@ namespace PhaseField
     run();
 
   private:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     void
     setup_system();
     void

@@ -2,7 +2,7 @@
 #define phasefield_problems_contour_output_h
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/geometry/huffman_labeling.h>
 #include <phasefield/mesh/discretization.h>
 #include <string>
@@ -62,10 +62,10 @@ namespace PhaseField
      */
     template <int dim>
     void
-    write_picture(const Labelings<dim>                        &labelings,
-                  const Discretization<dim>                   &discretization,
-                  const dealii::TrilinosWrappers::MPI::Vector &u,
-                  const std::string                           &filename);
+    write_picture(const Labelings<dim>      &labelings,
+                  const Discretization<dim> &discretization,
+                  const Vector              &u,
+                  const std::string         &filename);
   } // namespace ContourOutput
 } // namespace PhaseField
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/geometry/huffman_labeling.h>
 #include <phasefield/geometry/images.h>
 #include <phasefield/problems/contour_parameters.h>
@@ -53,9 +54,6 @@ namespace PhaseField
   class ContourProblem : public PhaseFieldProblem<dim>
   {
   public:
-    using typename PhaseFieldProblem<dim>::Vector;
-    using typename PhaseFieldProblem<dim>::BlockVector;
-
     /** @p parameters must outlive the problem. */
     explicit ContourProblem(const ContourParameters &parameters);
 

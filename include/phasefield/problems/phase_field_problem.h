@@ -4,8 +4,8 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/outer_energy.h>
@@ -29,9 +29,6 @@ namespace PhaseField
   class PhaseFieldProblem : public TimeLoop<dim>::Client
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     /**
      * Run the whole simulation: from the initial shape, or with
      * `Checkpoint / Resume` from the newest checkpoint in the output

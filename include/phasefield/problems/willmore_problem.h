@@ -1,6 +1,7 @@
 #ifndef phasefield_problems_willmore_problem_h
 #define phasefield_problems_willmore_problem_h
 
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/problems/phase_field_problem.h>
 
@@ -18,8 +19,6 @@ namespace PhaseField
   class WillmoreProblem : public PhaseFieldProblem<dim>
   {
   public:
-    using BlockVector = typename PhaseFieldProblem<dim>::BlockVector;
-
     explicit WillmoreProblem(const WillmoreParameters &parameters);
 
     /** ||U - tanh(d_exact(t)/eps)||_L2, NaN without an exact solution. */

@@ -2,11 +2,11 @@
 #define phasefield_schemes_augmented_lagrangian_scheme_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
-#include <phasefield/schemes/nested_scheme.h>
+#include <phasefield/schemes/nested/nested_model.h>
+#include <phasefield/schemes/nested/nested_physics.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/solvers/augmented_lagrangian.h>
 #include <phasefield/solvers/linear_solver.h>
@@ -158,10 +158,6 @@ namespace PhaseField
     make_point() const;
 
   private:
-    /** @p kd = K(V) @p d, matrix-free. */
-    void
-    k_vmult(const Vector &v, const Vector &d, Vector &kd) const;
-
     /**
      * S_V = w Khat M^-1 Khat + m M, Khat = K(V) - b M at V = schur_v, in
      * product form with its multigrid (no Schur solver).
@@ -185,12 +181,12 @@ namespace PhaseField
     /** The factor 2s of f. */
     const double f_scale;
     /** R_P of the nested step: c(x). */
-    const NestedStep<dim> nested_step;
+    const NestedPhysics<dim> physics;
     /**
      * The product form of S_V (no Schur solver): G, its multigrid, 1 - V^2
      * and gamma^2/m.
      */
-    StiffnessPlusDiagonal                schur_factor;
+    std::unique_ptr<ShiftedStiffness>    schur_factor;
     std::unique_ptr<SchurPreconditioner> schur_multigrid;
     Vector                               interface_mode;
     double                               schur_inverse_scale = 0;
@@ -225,9 +221,6 @@ namespace PhaseField
   class AugmentedLagrangianScheme : public TimeSteppingScheme<dim>
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     AugmentedLagrangianScheme(const SchemeSettings             &settings,
                               const Discretization<dim>        &discretization,
                               const dealii::ConditionalOStream &pcout);
@@ -299,7 +292,9 @@ namespace PhaseField
     const Discretization<dim>        &discretization;
     const dealii::ConditionalOStream &pcout;
     /** Initialisation, energies and energy law of the same problem. */
-    NestedScheme<dim> nested;
+    NestedModel<dim> model;
+    /** The type of the linear solvers (`Linear solver / Type` resolved). */
+    const LinearSolverType solver_type;
     /** The penalty the next step starts with. */
     double next_penalty;
     /** Sum of AugmentedLagrangianStep::n_setups() over the steps. */

@@ -1,7 +1,7 @@
 #ifndef phasefield_schemes_energies_h
 #define phasefield_schemes_energies_h
 
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/mesh/lumped_operators.h>
 
 namespace PhaseField
@@ -32,16 +32,16 @@ namespace PhaseField
    */
   template <int dim>
   Energies
-  phase_field_energies(const LumpedOperators<dim>                  &operators,
-                       const dealii::TrilinosWrappers::MPI::Vector &u,
-                       const double                                 epsilon);
+  phase_field_energies(const LumpedOperators<dim> &operators,
+                       const Vector               &u,
+                       const double                epsilon);
 
   /** a_eps[U] = (1/2) Int eps |grad U|^2 + Psi(U)/eps (lumped). */
   template <int dim>
   double
-  area_functional(const LumpedOperators<dim>                  &operators,
-                  const dealii::TrilinosWrappers::MPI::Vector &u,
-                  const double                                 epsilon);
+  area_functional(const LumpedOperators<dim> &operators,
+                  const Vector               &u,
+                  const double                epsilon);
 } // namespace PhaseField
 
 #endif

@@ -2,7 +2,7 @@
 #define phasefield_schemes_outer_energy_h
 
 #include <deal.II/base/index_set.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 
 namespace PhaseField
 {
@@ -43,7 +43,7 @@ namespace PhaseField
      * Nodal forcing F = M I_h(f), already multiplied by the lumped mass;
      * nullptr: none. It enters the outer energy as -2 tau F.U.
      */
-    const dealii::TrilinosWrappers::MPI::Vector *forcing = nullptr;
+    const Vector *forcing = nullptr;
 
     /**
      * Are the area term or fixed U values present? The UU block of the

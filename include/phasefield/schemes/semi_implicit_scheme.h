@@ -2,10 +2,9 @@
 #define phasefield_schemes_semi_implicit_scheme_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/energies.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
@@ -51,9 +50,6 @@ namespace PhaseField
   class SemiImplicitStep : public NonlinearSystem
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     /**
      * One step of size @p tau from the state @p old_state = (U^k, F^k),
      * which must stay alive while the step is used.
@@ -125,9 +121,6 @@ namespace PhaseField
   class SemiImplicitScheme : public TimeSteppingScheme<dim>
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     SemiImplicitScheme(const SchemeSettings             &settings,
                        const Discretization<dim>        &discretization,
                        const dealii::ConditionalOStream &pcout);

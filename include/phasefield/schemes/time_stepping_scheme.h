@@ -2,9 +2,8 @@
 #define phasefield_schemes_time_stepping_scheme_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/energies.h>
@@ -49,9 +48,6 @@ namespace PhaseField
   class TimeSteppingScheme
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     virtual ~TimeSteppingScheme() = default;
 
     /** The value of `Time stepping / Scheme`, e.g. "nested". */

@@ -2,8 +2,7 @@
 #define phasefield_solvers_augmented_lagrangian_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/solvers/trust_region.h>
 
 /**
@@ -27,9 +26,6 @@ namespace PhaseField
   class ConstrainedMinimizationProblem
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     virtual ~ConstrainedMinimizationProblem() = default;
 
     /** f(@p x). */
@@ -133,9 +129,9 @@ namespace PhaseField
    * region failed or max_outer_iterations were used.
    */
   AugmentedLagrangianReport
-  augmented_lagrangian_minimize(ConstrainedMinimizationProblem &problem,
-                                dealii::TrilinosWrappers::MPI::BlockVector &x,
-                                dealii::TrilinosWrappers::MPI::Vector      &p,
+  augmented_lagrangian_minimize(ConstrainedMinimizationProblem   &problem,
+                                BlockVector                      &x,
+                                Vector                           &p,
                                 const AugmentedLagrangianControl &control,
                                 const dealii::ConditionalOStream &pcout,
                                 const bool                        verbose);
@@ -147,8 +143,6 @@ namespace PhaseField
   class AugmentedLagrangianObjective : public TrustRegionObjective
   {
   public:
-    using Vector = dealii::TrilinosWrappers::MPI::Vector;
-
     /** @p p must outlive this object. */
     AugmentedLagrangianObjective(ConstrainedMinimizationProblem &problem,
                                  const Vector                   &p,

@@ -2,7 +2,7 @@
 #define phasefield_solvers_descent_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/solvers/linear_solver.h>
 #include <phasefield/solvers/nonlinear_system.h>
 
@@ -33,9 +33,9 @@ namespace PhaseField
    * round-off, where the residual norm may stagnate above a tight target.
    */
   StepReport
-  minimizing_newton_solve(MinimizationProblem                        &problem,
-                          dealii::TrilinosWrappers::MPI::BlockVector &z,
-                          const NewtonControl                        &control,
+  minimizing_newton_solve(MinimizationProblem              &problem,
+                          BlockVector                      &z,
+                          const NewtonControl              &control,
                           LinearSolver                     &linear_solver,
                           const dealii::ConditionalOStream &pcout,
                           const bool                        verbose);

@@ -2,8 +2,8 @@
 #define phasefield_solvers_direct_factorization_h
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 
 class Amesos_BaseSolver;
 class Epetra_LinearProblem;
@@ -36,8 +36,7 @@ namespace PhaseField
 
     /** dst = A^-1 src. */
     void
-    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
-          const dealii::TrilinosWrappers::MPI::Vector &src) const;
+    vmult(Vector &dst, const Vector &src) const;
 
     /** Number of rows of the factorised matrix. */
     dealii::types::global_dof_index

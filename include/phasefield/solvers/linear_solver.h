@@ -4,10 +4,10 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <memory>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
-#include <phasefield/mesh/stiffness_plus_diagonal.h>
+#include <phasefield/mesh/stiffness_operator.h>
 #include <phasefield/solvers/direct_factorization.h>
 
 namespace PhaseField
@@ -129,17 +129,15 @@ namespace PhaseField
      */
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
-          dealii::TrilinosWrappers::MPI::Vector        &solution,
-          const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+          Vector                                       &solution,
+          const Vector                                 &rhs);
 
     /**
      * Solve with an operator that is not stored as a matrix (iterative
      * type only): Krylov iterations with an AMG set up from its rows.
      */
     unsigned int
-    solve(const StiffnessPlusDiagonal                 &op,
-          dealii::TrilinosWrappers::MPI::Vector       &solution,
-          const dealii::TrilinosWrappers::MPI::Vector &rhs);
+    solve(const ShiftedStiffness &op, Vector &solution, const Vector &rhs);
 
     /**
      * Solve S x = r for S = diag(d) + w Khat M^-1 Khat given in product
@@ -159,16 +157,15 @@ namespace PhaseField
      * (SchurPreconditioner). Returns the CG iterations.
      */
     unsigned int
-    solve_product_form(
-      const StiffnessPlusDiagonal                 &k_hat,
-      const double                                 w,
-      const dealii::TrilinosWrappers::MPI::Vector &d,
-      const StiffnessPlusDiagonal                 &g,
-      const dealii::TrilinosWrappers::MPI::Vector &mass,
-      const dealii::TrilinosWrappers::MPI::Vector &inverse_mass,
-      dealii::TrilinosWrappers::MPI::Vector       &solution,
-      const dealii::TrilinosWrappers::MPI::Vector &rhs,
-      const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr);
+    solve_product_form(const ShiftedStiffness &k_hat,
+                       const double            w,
+                       const Vector           &d,
+                       const ShiftedStiffness &g,
+                       const Vector           &mass,
+                       const Vector           &inverse_mass,
+                       Vector                 &solution,
+                       const Vector           &rhs,
+                       const Vector           *interface_mode = nullptr);
 
     /**
      * Solve @p op x = @p rhs by flexible GMRES with the preconditioner
@@ -285,10 +282,10 @@ namespace PhaseField
      * SolverControl::NoConvergence.
      */
     unsigned int
-    cg_solve_product_form(const ProductFormMatrix                     &s,
-                          dealii::TrilinosWrappers::MPI::Vector       &solution,
-                          const dealii::TrilinosWrappers::MPI::Vector &rhs,
-                          const unsigned int iteration_limit);
+    cg_solve_product_form(const ProductFormMatrix &s,
+                          Vector                  &solution,
+                          const Vector            &rhs,
+                          const unsigned int       iteration_limit);
 
     /**
      * Iterations allowed to a solve with a kept SchurPreconditioner:
@@ -306,14 +303,13 @@ namespace PhaseField
      * (at some node).
      */
     bool
-    interface_moved(
-      const dealii::TrilinosWrappers::MPI::Vector *interface_mode) const;
+    interface_moved(const Vector *interface_mode) const;
 
     /** Direct type: GMRES preconditioned with a (possibly earlier) LU. */
     unsigned int
     solve_direct(const dealii::TrilinosWrappers::SparseMatrix &matrix,
-                 dealii::TrilinosWrappers::MPI::Vector        &solution,
-                 const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+                 Vector                                       &solution,
+                 const Vector                                 &rhs);
 
     /**
      * Factorise @p matrix, reusing the analysis of the stored
@@ -328,19 +324,19 @@ namespace PhaseField
      */
     template <typename Operator>
     unsigned int
-    solve_with_multigrid(const Operator                              &op,
-                         const Epetra_RowMatrix                      &rows,
-                         dealii::TrilinosWrappers::MPI::Vector       &solution,
-                         const dealii::TrilinosWrappers::MPI::Vector &rhs);
+    solve_with_multigrid(const Operator         &op,
+                         const Epetra_RowMatrix &rows,
+                         Vector                 &solution,
+                         const Vector           &rhs);
 
     /** Right-preconditioned GMRES. */
     template <typename Operator, typename Preconditioner>
     void
-    gmres_solve(const Operator                              &op,
-                dealii::TrilinosWrappers::MPI::Vector       &solution,
-                const dealii::TrilinosWrappers::MPI::Vector &rhs,
-                const Preconditioner                        &preconditioner,
-                dealii::SolverControl                       &control) const;
+    gmres_solve(const Operator        &op,
+                Vector                &solution,
+                const Vector          &rhs,
+                const Preconditioner  &preconditioner,
+                dealii::SolverControl &control) const;
 
     const LinearSolverType solver_type;
     const double           relative_tolerance;
@@ -370,10 +366,10 @@ namespace PhaseField
     /** The first solve after the set-up of schur_preconditioner. */
     SolveRecord fresh_solve;
     /** The interface mode of the set-up of schur_preconditioner. */
-    dealii::TrilinosWrappers::MPI::Vector setup_interface_mode;
-    bool                                  constant_matrix            = false;
-    bool                                  persistent_matrices        = false;
-    unsigned int                          pivoting_workspace_percent = 0;
+    Vector       setup_interface_mode;
+    bool         constant_matrix            = false;
+    bool         persistent_matrices        = false;
+    unsigned int pivoting_workspace_percent = 0;
   };
 } // namespace PhaseField
 

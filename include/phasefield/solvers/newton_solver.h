@@ -2,7 +2,7 @@
 #define phasefield_solvers_newton_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/solvers/linear_solver.h>
 #include <phasefield/solvers/nonlinear_system.h>
 
@@ -22,12 +22,12 @@ namespace PhaseField
    * and @p z holds the last accepted iterate.
    */
   StepReport
-  newton_solve(NonlinearSystem                            &system,
-               dealii::TrilinosWrappers::MPI::BlockVector &z,
-               const NewtonControl                        &control,
-               LinearSolver                               &linear_solver,
-               const dealii::ConditionalOStream           &pcout,
-               const bool                                  verbose);
+  newton_solve(NonlinearSystem                  &system,
+               BlockVector                      &z,
+               const NewtonControl              &control,
+               LinearSolver                     &linear_solver,
+               const dealii::ConditionalOStream &pcout,
+               const bool                        verbose);
 } // namespace PhaseField
 
 #endif

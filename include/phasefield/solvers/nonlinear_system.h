@@ -3,8 +3,8 @@
 
 #include <cmath>
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <phasefield/core/constants.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/solvers/linear_solver.h>
 
@@ -42,8 +42,6 @@ namespace PhaseField
   class NonlinearSystem
   {
   public:
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     virtual ~NonlinearSystem() = default;
 
     /** @p r = R(@p z). */
@@ -174,14 +172,14 @@ namespace PhaseField
      * report.converged if it is reached already.
      */
     double
-    start_newton(const NonlinearSystem                            &system,
-                 const dealii::TrilinosWrappers::MPI::BlockVector &z,
-                 dealii::TrilinosWrappers::MPI::BlockVector       &residual,
-                 const NewtonControl                              &control,
-                 const dealii::ConditionalOStream                 &pcout,
-                 const bool                                        verbose,
-                 double                                           &norm,
-                 StepReport                                       &report);
+    start_newton(const NonlinearSystem            &system,
+                 const BlockVector                &z,
+                 BlockVector                      &residual,
+                 const NewtonControl              &control,
+                 const dealii::ConditionalOStream &pcout,
+                 const bool                        verbose,
+                 double                           &norm,
+                 StepReport                       &report);
 
     /**
      * The tolerances of the linear solves of an inexact Newton method

@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/mesh/stiffness_plus_diagonal.h>
 
 /**
@@ -64,10 +64,20 @@ namespace PhaseField
    */
   void
   initialize_multigrid(
-    dealii::TrilinosWrappers::PreconditionAMG   &multigrid,
-    const Epetra_RowMatrix                      &matrix,
-    const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr,
+    dealii::TrilinosWrappers::PreconditionAMG &multigrid,
+    const Epetra_RowMatrix                    &matrix,
+    const Vector                              *interface_mode = nullptr,
     const unsigned int smoother_sweeps = multigrid_smoother_sweeps);
+
+
+
+  /**
+   * The rows of @p op for an algebraic multigrid: the Trilinos
+   * implementation of f L + D (StiffnessPlusDiagonal) is an
+   * Epetra_RowMatrix. Throws for a backend without stored rows.
+   */
+  const Epetra_RowMatrix &
+  multigrid_rows(const ShiftedStiffness &op);
 
 
 
@@ -77,11 +87,11 @@ namespace PhaseField
    */
   template <typename Operator>
   void
-  apply_symmetric_product(const Operator                              &a,
-                          const dealii::TrilinosWrappers::MPI::Vector &diagonal,
-                          dealii::TrilinosWrappers::MPI::Vector       &tmp,
-                          dealii::TrilinosWrappers::MPI::Vector       &dst,
-                          const dealii::TrilinosWrappers::MPI::Vector &src)
+  apply_symmetric_product(const Operator &a,
+                          const Vector   &diagonal,
+                          Vector         &tmp,
+                          Vector         &dst,
+                          const Vector   &src)
   {
     a.vmult(tmp, src);
     tmp.scale(diagonal);
@@ -94,10 +104,10 @@ namespace PhaseField
   class ProductFormMatrix
   {
   public:
-    ProductFormMatrix(const StiffnessPlusDiagonal                 &k_hat,
-                      const double                                 w,
-                      const dealii::TrilinosWrappers::MPI::Vector &d,
-                      const dealii::TrilinosWrappers::MPI::Vector &inverse_mass)
+    ProductFormMatrix(const ShiftedStiffness &k_hat,
+                      const double            w,
+                      const Vector           &d,
+                      const Vector           &inverse_mass)
       : k_hat(k_hat)
       , w(w)
       , d(d)
@@ -106,8 +116,7 @@ namespace PhaseField
     {}
 
     void
-    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
-          const dealii::TrilinosWrappers::MPI::Vector &src) const
+    vmult(Vector &dst, const Vector &src) const
     {
       apply_symmetric_product(k_hat, inverse_mass, tmp, dst, src);
       dst *= w;
@@ -117,11 +126,11 @@ namespace PhaseField
     }
 
   private:
-    const StiffnessPlusDiagonal                  &k_hat;
-    const double                                  w;
-    const dealii::TrilinosWrappers::MPI::Vector  &d;
-    const dealii::TrilinosWrappers::MPI::Vector  &inverse_mass;
-    mutable dealii::TrilinosWrappers::MPI::Vector tmp;
+    const ShiftedStiffness &k_hat;
+    const double            w;
+    const Vector           &d;
+    const Vector           &inverse_mass;
+    mutable Vector          tmp;
   };
 
 
@@ -146,19 +155,20 @@ namespace PhaseField
   class SchurPreconditioner
   {
   public:
-    SchurPreconditioner(
-      const StiffnessPlusDiagonal                 &g,
-      const dealii::TrilinosWrappers::MPI::Vector &mass,
-      const dealii::TrilinosWrappers::MPI::Vector *interface_mode = nullptr)
+    SchurPreconditioner(const ShiftedStiffness &g,
+                        const Vector           &mass,
+                        const Vector           *interface_mode = nullptr)
       : mass(mass)
       , tmp(mass)
     {
-      initialize_multigrid(multigrid, g, interface_mode, schur_smoother_sweeps);
+      initialize_multigrid(multigrid,
+                           multigrid_rows(g),
+                           interface_mode,
+                           schur_smoother_sweeps);
     }
 
     void
-    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
-          const dealii::TrilinosWrappers::MPI::Vector &src) const
+    vmult(Vector &dst, const Vector &src) const
     {
       apply_symmetric_product(multigrid, mass, tmp, dst, src);
     }
@@ -171,9 +181,9 @@ namespace PhaseField
     }
 
   private:
-    dealii::TrilinosWrappers::PreconditionAMG     multigrid;
-    const dealii::TrilinosWrappers::MPI::Vector  &mass;
-    mutable dealii::TrilinosWrappers::MPI::Vector tmp;
+    dealii::TrilinosWrappers::PreconditionAMG multigrid;
+    const Vector                             &mass;
+    mutable Vector                            tmp;
   };
 } // namespace PhaseField
 

@@ -1,6 +1,7 @@
 #ifndef phasefield_solvers_rol_trust_region_h
 #define phasefield_solvers_rol_trust_region_h
 
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/solvers/trust_region.h>
 
 /**
@@ -27,8 +28,8 @@ namespace PhaseField
    * Hessian products; at_roundoff is never set.
    */
   TrustRegionReport
-  rol_trust_region_minimize(TrustRegionObjective &objective,
-                            dealii::TrilinosWrappers::MPI::BlockVector &x,
+  rol_trust_region_minimize(TrustRegionObjective     &objective,
+                            BlockVector              &x,
                             const TrustRegionControl &control);
 } // namespace PhaseField
 

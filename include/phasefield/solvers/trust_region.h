@@ -1,7 +1,7 @@
 #ifndef phasefield_solvers_trust_region_h
 #define phasefield_solvers_trust_region_h
 
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/core/linear_algebra.h>
 
 /**
  * A trust-region method with the Steihaug-Toint truncated conjugate
@@ -20,8 +20,6 @@ namespace PhaseField
   class TrustRegionObjective
   {
   public:
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     virtual ~TrustRegionObjective() = default;
 
     /** The value at @p x. */
@@ -108,12 +106,12 @@ namespace PhaseField
    * after @p max_iterations.
    */
   TruncatedCGResult
-  truncated_cg(const TrustRegionObjective                       &objective,
-               const dealii::TrilinosWrappers::MPI::BlockVector &g,
-               const double                                      radius,
-               const double                                      tolerance,
-               const unsigned int                                max_iterations,
-               dealii::TrilinosWrappers::MPI::BlockVector       &s);
+  truncated_cg(const TrustRegionObjective &objective,
+               const BlockVector          &g,
+               const double                radius,
+               const double                tolerance,
+               const unsigned int          max_iterations,
+               BlockVector                &s);
 
   /**
    * Minimise @p objective from @p x (updated in place) by the trust-region
@@ -131,9 +129,9 @@ namespace PhaseField
    * TrustRegion::min_radius times the initial one.
    */
   TrustRegionReport
-  trust_region_minimize(TrustRegionObjective                       &objective,
-                        dealii::TrilinosWrappers::MPI::BlockVector &x,
-                        const TrustRegionControl                   &control);
+  trust_region_minimize(TrustRegionObjective     &objective,
+                        BlockVector              &x,
+                        const TrustRegionControl &control);
 
   /** The constants of trust_region_minimize(). */
   namespace TrustRegion

@@ -2,7 +2,7 @@
 #define phasefield_time_checkpoint_h
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/mesh/discretization.h>
 #include <string>
 #include <utility>
@@ -72,10 +72,10 @@ namespace PhaseField
      */
     template <int dim>
     void
-    write(const std::string                                &directory,
-          const Discretization<dim>                        &discretization,
-          const dealii::TrilinosWrappers::MPI::BlockVector &state,
-          const State &time_stepping_state);
+    write(const std::string         &directory,
+          const Discretization<dim> &discretization,
+          const BlockVector         &state,
+          const State               &time_stepping_state);
 
     /**
      * The path of the newest complete checkpoint in @p directory. Throws

@@ -1,7 +1,7 @@
 #ifndef phasefield_time_finite_fields_h
 #define phasefield_time_finite_fields_h
 
-#include <deal.II/lac/trilinos_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,10 +18,8 @@ namespace PhaseField
    */
   void
   check_output_fields_finite(
-    const unsigned int step,
-    const std::vector<
-      std::pair<std::string, const dealii::TrilinosWrappers::MPI::Vector *>>
-      &fields);
+    const unsigned int                                         step,
+    const std::vector<std::pair<std::string, const Vector *>> &fields);
 } // namespace PhaseField
 
 #endif

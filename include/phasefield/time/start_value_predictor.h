@@ -1,7 +1,7 @@
 #ifndef phasefield_time_start_value_predictor_h
 #define phasefield_time_start_value_predictor_h
 
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <vector>
 
@@ -33,9 +33,6 @@ namespace PhaseField
   class StartValuePredictor
   {
   public:
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-
     /**
      * Record the step of size @p tau from @p before to @p after (both on
      * the current mesh); the next prediction extrapolates U as @p how

@@ -4,8 +4,8 @@
 #include <boost/signals2/connection.hpp>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <limits>
+#include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/mesh/discretization.h>
@@ -34,9 +34,6 @@ namespace PhaseField
   class TimeLoop
   {
   public:
-    using Vector      = dealii::TrilinosWrappers::MPI::Vector;
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
     /** The problem's part of the loop; every function has a default. */
     class Client
     {
