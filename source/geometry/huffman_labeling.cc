@@ -271,6 +271,32 @@ namespace PhaseField
 
     template <int dim>
     std::vector<double>
+    labeling_derivative(const DoFHandler<dim>   &dof_handler,
+                        const Vector            &u,
+                        const Vector            &d,
+                        const LabelingGrid<dim> &grid)
+    {
+      std::vector<double> jd(grid.size(), 0.);
+      for_each_column_point(
+        dof_handler,
+        grid,
+        [&](const unsigned int                        i,
+            const std::array<double, n_corners<dim>> &w,
+            const ColumnDofs<dim>                    &dofs) {
+          const double difference = column_difference<dim>(u, w, dofs);
+          // d/du (1/2)|difference|; zero where the sign has a kink
+          jd[i] += 0.5 * ((difference > 0) - (difference < 0)) *
+                   column_difference<dim>(d, w, dofs);
+        },
+        [](const ColumnDofs<dim> &) {});
+      Utilities::MPI::sum(jd, u.get_mpi_communicator(), jd);
+      return jd;
+    }
+
+
+
+    template <int dim>
+    std::vector<double>
     labeling_of_function(const Function<dim>     &phase_field,
                          const LabelingGrid<dim> &grid,
                          const MPI_Comm           comm)
@@ -389,6 +415,10 @@ namespace PhaseField
   template std::vector<double> labeling(const DoFHandler<dim> &,                          \
                                         const Vector &,                                   \
                                         const LabelingGrid<dim> &);                       \
+  template std::vector<double> labeling_derivative(const DoFHandler<dim> &,               \
+                                                   const Vector &,                        \
+                                                   const Vector &,                        \
+                                                   const LabelingGrid<dim> &);            \
   template void                add_labeling_derivative(const DoFHandler<dim> &,           \
                                                        const AffineConstraints<double> &, \
                                                        const Vector &,                    \

@@ -158,11 +158,14 @@ namespace PhaseField
   ContourProblem<dim>::start_level(const unsigned int index)
   {
     TimerOutput::Scope t(this->computing_timer, "labeling: target");
-    level_index     = index;
-    this->level_prm = parameters.for_level(index);
-    grid            = std::make_unique<HuffmanLabeling::LabelingGrid<dim>>(
-      this->level_prm.mesh.finest_level);
-    target = target_on(*grid);
+    level_index              = index;
+    this->level_prm          = parameters.for_level(index);
+    const unsigned int level = this->level_prm.mesh.finest_level;
+    mismatch_term            = std::make_unique<MismatchTerm<dim>>(
+      this->discretization,
+      level,
+      target_on(HuffmanLabeling::LabelingGrid<dim>(level)),
+      parameters.model.mismatch_weight);
     criterion_history.clear();
     this->pcout << "level " << this->level_prm.mesh.finest_level
                 << ": h = " << this->level_prm.mesh.h()
@@ -246,22 +249,10 @@ namespace PhaseField
 
 
   template <int dim>
-  typename ContourProblem<dim>::Mismatch
+  typename MismatchTerm<dim>::Evaluation
   ContourProblem<dim>::mismatch(const BlockVector &state) const
   {
-    Mismatch m;
-    m.alpha = HuffmanLabeling::labeling(this->discretization.get_dof_handler(),
-                                        ghosted_u(state),
-                                        *grid);
-    std::vector<double> squared(grid->size()), absolute(grid->size());
-    for (unsigned int i = 0; i < grid->size(); ++i)
-      {
-        squared[i]  = std::pow(target[i] - m.alpha[i], 2);
-        absolute[i] = std::abs(target[i] - m.alpha[i]);
-      }
-    m.energy = parameters.model.mismatch_weight * grid->integrate(squared);
-    m.labeling_error = grid->integrate(absolute);
-    return m;
+    return mismatch_term->evaluate(state.block(0));
   }
 
 
@@ -296,21 +287,9 @@ namespace PhaseField
   void
   ContourProblem<dim>::mismatch_step(BlockVector &state, const double tau) const
   {
-    const Vector        u     = ghosted_u(state);
-    const Mismatch      m     = mismatch(state);
-    const double        gamma = parameters.model.mismatch_weight;
-    std::vector<double> r(grid->size());
-    for (unsigned int i = 0; i < grid->size(); ++i)
-      r[i] = 2 * gamma * grid->weight(i) * (m.alpha[i] - target[i]);
     Vector gradient(state.block(0));
     gradient = 0;
-    HuffmanLabeling::add_labeling_derivative(
-      this->discretization.get_dof_handler(),
-      this->discretization.get_constraints(),
-      u,
-      *grid,
-      r,
-      gradient);
+    mismatch_term->add_gradient(state.block(0), 1., gradient);
     // eps M (U - U^{k+1/3}) = -tau G with the lumped mass M
     gradient.scale(this->discretization.get_operators().inverse_lumped_mass);
     state.block(0).add(-tau / this->level_prm.model.epsilon, gradient);
@@ -324,8 +303,7 @@ namespace PhaseField
   ContourProblem<dim>::total_energy(const Energies &energies,
                                     const double    j) const
   {
-    return (parameters.model.willmore_weight * energies.willmore +
-            parameters.model.area_weight * energies.area) /
+    return weighted_regularisation(this->setup.outer_energy, energies) /
              Constants::geometric_unit +
            j;
   }
@@ -341,8 +319,8 @@ namespace PhaseField
     (void)step;
     if (parameters.multilevel.transition != LevelTransition::automatic)
       return false;
-    const Mismatch m = mismatch(state);
-    const bool     labeling =
+    const auto m = mismatch(state);
+    const bool labeling =
       parameters.multilevel.criterion == TransitionCriterion::labeling_error;
     criterion_history.push_back(labeling ? m.labeling_error :
                                            total_energy(energies, m.energy));
@@ -377,7 +355,7 @@ namespace PhaseField
   ContourProblem<dim>::extra_values(const BlockVector &state,
                                     const Energies    &energies) const
   {
-    const Mismatch m = mismatch(state);
+    const auto m = mismatch(state);
     return {double(this->level_prm.mesh.finest_level),
             m.energy,
             m.labeling_error,
@@ -391,7 +369,8 @@ namespace PhaseField
   ContourProblem<dim>::write_level_results(const bool last_level)
   {
     TimerOutput::Scope t(this->computing_timer, "output: labelings");
-    const HuffmanLabeling::LabelingGrid<dim> centres(grid->level(), true);
+    const unsigned int level_number = mismatch_term->grid().level();
+    const HuffmanLabeling::LabelingGrid<dim> centres(level_number, true);
     ContourOutput::Labelings<dim>            labelings{
       centres,
       target_on(centres),
@@ -399,7 +378,7 @@ namespace PhaseField
                                 ghosted_u(this->solution),
                                 centres)};
     const std::string directory = this->prm.output_directory;
-    const std::string level     = std::to_string(grid->level());
+    const std::string level     = std::to_string(level_number);
     ContourOutput::write_csv(labelings,
                              directory + "/labeling_level_" + level + ".csv",
                              this->mpi_communicator);

@@ -8,15 +8,6 @@ namespace PhaseField
 {
   using namespace dealii;
 
-  namespace
-  {
-    /** Block indices of the point x = (U, V) of a step. */
-    constexpr unsigned int x_u = 0;
-    constexpr unsigned int x_v = 1;
-  } // namespace
-
-
-
   template <int dim>
   AugmentedLagrangianStep<dim>::AugmentedLagrangianStep(
     const Discretization<dim> &discretization,
@@ -71,24 +62,20 @@ namespace PhaseField
   AugmentedLagrangianStep<dim>::objective_gradient(const BlockVector &x,
                                                    BlockVector       &g) const
   {
-    const double *m  = ops.lumped_mass.begin();
-    const double *u  = x.block(x_u).begin();
-    const double *v  = x.block(x_v).begin();
-    const double *uk = old_u.begin();
-    const double *f =
-      coeff.outer.forcing ? coeff.outer.forcing->begin() : nullptr;
-    const double       forcing_factor = coeff.tau / coeff.epsilon;
-    const unsigned int n              = x.block(x_u).locally_owned_size();
+    const double      *m  = ops.lumped_mass.begin();
+    const double      *u  = x.block(Field::U).begin();
+    const double      *v  = x.block(Field::V).begin();
+    const double      *uk = old_u.begin();
+    const unsigned int n  = x.block(Field::U).locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
         const double a_difference = weights.a * m[i] * (v[i] - u[i]);
-        g.block(x_u).begin()[i] =
-          f_scale * (m[i] * (u[i] - uk[i]) - a_difference -
-                     (f ? forcing_factor * f[i] : 0.));
-        g.block(x_v).begin()[i] = f_scale * a_difference;
+        g.block(Field::U).begin()[i] =
+          f_scale * (m[i] * (u[i] - uk[i]) - a_difference);
+        g.block(Field::V).begin()[i] = f_scale * a_difference;
       }
-    physics.add_area_gradient(x.block(x_u), f_scale, g.block(x_u));
-    physics.zero_fixed_u(g.block(x_u));
+    physics.add_terms_gradient(x.block(Field::U), f_scale, g.block(Field::U));
+    physics.zero_fixed_u(g.block(Field::U));
     for (unsigned int b = 0; b < 2; ++b)
       ops.zero_constrained(g.block(b));
   }
@@ -102,21 +89,21 @@ namespace PhaseField
                                                         BlockVector &y) const
   {
     const double      *m  = ops.lumped_mass.begin();
-    const double      *du = d.block(x_u).begin();
-    const double      *dv = d.block(x_v).begin();
+    const double      *du = d.block(Field::U).begin();
+    const double      *dv = d.block(Field::V).begin();
     const double       a  = weights.a;
-    const unsigned int n  = d.block(x_u).locally_owned_size();
+    const unsigned int n  = d.block(Field::U).locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
-        y.block(x_u).begin()[i] =
+        y.block(Field::U).begin()[i] =
           f_scale * m[i] * ((1 + a) * du[i] - a * dv[i]);
-        y.block(x_v).begin()[i] = f_scale * m[i] * a * (dv[i] - du[i]);
+        y.block(Field::V).begin()[i] = f_scale * m[i] * a * (dv[i] - du[i]);
       }
-    physics.add_area_hessian_vmult(x.block(x_u),
-                                   d.block(x_u),
-                                   f_scale,
-                                   y.block(x_u));
-    physics.zero_fixed_u(y.block(x_u));
+    physics.add_terms_hessian_vmult(x.block(Field::U),
+                                    d.block(Field::U),
+                                    f_scale,
+                                    y.block(Field::U));
+    physics.zero_fixed_u(y.block(Field::U));
     for (unsigned int b = 0; b < 2; ++b)
       ops.zero_constrained(y.block(b));
   }
@@ -128,7 +115,7 @@ namespace PhaseField
   AugmentedLagrangianStep<dim>::constraint(const BlockVector &x,
                                            Vector            &c) const
   {
-    physics.inner_residual(x.block(x_u), x.block(x_v), c);
+    physics.inner_residual(x.block(Field::U), x.block(Field::V), c);
   }
 
 
@@ -140,11 +127,11 @@ namespace PhaseField
                                                           Vector &jd) const
   {
     // c'(d) = -M d_U + K(V) d_V
-    physics.k_vmult(x.block(x_v), d.block(x_v), jd);
+    physics.k_vmult(x.block(Field::V), d.block(Field::V), jd);
     const double      *m = ops.lumped_mass.begin();
     const unsigned int n = jd.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
-      jd.begin()[i] -= m[i] * d.block(x_u).begin()[i];
+      jd.begin()[i] -= m[i] * d.block(Field::U).begin()[i];
   }
 
 
@@ -156,12 +143,12 @@ namespace PhaseField
                                                            BlockVector &g) const
   {
     // c'^T y = (-M y, K(V) y)
-    physics.k_vmult(x.block(x_v), y, g.block(x_v));
-    g.block(x_u) = y;
-    g.block(x_u).scale(ops.lumped_mass);
-    g.block(x_u) *= -1;
-    physics.zero_fixed_u(g.block(x_u));
-    ops.zero_constrained(g.block(x_u));
+    physics.k_vmult(x.block(Field::V), y, g.block(Field::V));
+    g.block(Field::U) = y;
+    g.block(Field::U).scale(ops.lumped_mass);
+    g.block(Field::U) *= -1;
+    physics.zero_fixed_u(g.block(Field::U));
+    ops.zero_constrained(g.block(Field::U));
   }
 
 
@@ -174,13 +161,13 @@ namespace PhaseField
                                                          BlockVector &out) const
   {
     // (0, c M[Psi'''(V) y] d_V)
-    out.block(x_u)       = 0;
+    out.block(Field::U)  = 0;
     const double      *m = ops.lumped_mass.begin();
-    const double      *v = x.block(x_v).begin();
+    const double      *v = x.block(Field::V).begin();
     const unsigned int n = y.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
-      out.block(x_v).begin()[i] =
-        m[i] * weights.e(v[i], y.begin()[i]) * d.block(x_v).begin()[i];
+      out.block(Field::V).begin()[i] =
+        m[i] * weights.e(v[i], y.begin()[i]) * d.block(Field::V).begin()[i];
   }
 
 
@@ -200,8 +187,8 @@ namespace PhaseField
   double
   AugmentedLagrangianStep<dim>::gradient_norm(const BlockVector &g) const
   {
-    return std::sqrt(std::pow(ops.dual_norm(g.block(x_u)), 2) +
-                     std::pow(ops.dual_norm(g.block(x_v)), 2));
+    return std::sqrt(std::pow(ops.dual_norm(g.block(Field::U)), 2) +
+                     std::pow(ops.dual_norm(g.block(Field::V)), 2));
   }
 
 
@@ -227,7 +214,7 @@ namespace PhaseField
     ++setups;
     schur_beta    = beta;
     schur_penalty = penalty;
-    schur_v       = x.block(x_v);
+    schur_v       = x.block(Field::V);
     if (schur_solver == nullptr)
       setup_schur_multigrid(a / (1 + a), w, m);
     else
@@ -271,24 +258,23 @@ namespace PhaseField
       values.add(at_fixed);
       return values;
     };
-    TrilinosWrappers::SparseMatrix k_hat;
-    ops.stiffness_plus_weighted_mass(weights.inner_tau,
-                                     physics.k_weights(schur_v, 0.),
-                                     k_hat);
+    // S_V = Khat diag(w) Khat + diag(m), Khat = ttau L + M[k(V)] - b M
     Vector shift = nodal(-b, 0.);
     shift.scale(ops.lumped_mass);
-    ops.add_to_diagonal(shift, k_hat);
     Vector weight = nodal(w, schur_penalty);
     weight.scale(ops.inverse_lumped_mass);
-    k_hat.mmult(schur, k_hat, weight);
     Vector diagonal = nodal(m, f_scale * weights.a);
     diagonal.scale(ops.lumped_mass);
-    ops.add_to_diagonal(diagonal, schur);
+    schur.assemble(ops,
+                   weights.inner_tau,
+                   physics.k_weights(schur_v, 0.),
+                   shift,
+                   weight,
+                   diagonal);
     // S_V has the same sparsity pattern at every iterate on one mesh:
     // MUMPS's analysis is kept (half of the time of a trust-region
     // iteration in 2D before)
-    schur_solver->set_constant_matrix(true);
-    schur_solver->factorize(schur);
+    schur.factorize(*schur_solver);
   }
 
 
@@ -299,7 +285,7 @@ namespace PhaseField
                                                     Vector       &z) const
   {
     if (schur_solver != nullptr)
-      schur_solver->solve(schur, z, r);
+      schur.solve(*schur_solver, z, r);
     else
       {
         schur_multigrid->vmult(z, r);
@@ -326,20 +312,20 @@ namespace PhaseField
       out.add(s_a, mass_part);
       ops.zero_constrained(out);
     };
-    Vector w(r.block(x_u)), rhs(w), cz(w);
+    Vector w(r.block(Field::U)), rhs(w), cz(w);
     w.scale(ops.inverse_lumped_mass);
     w /= schur_beta;
     ops.zero_constrained(w);
     coupling(w, rhs);
-    rhs += r.block(x_v);
-    apply_schur_inverse(rhs, z.block(x_v));
-    coupling(z.block(x_v), cz);
-    cz += r.block(x_u);
+    rhs += r.block(Field::V);
+    apply_schur_inverse(rhs, z.block(Field::V));
+    coupling(z.block(Field::V), cz);
+    cz += r.block(Field::U);
     cz.scale(ops.inverse_lumped_mass);
     cz /= schur_beta;
     ops.zero_constrained(cz);
     physics.zero_fixed_u(cz);
-    z.block(x_u) = cz;
+    z.block(Field::U) = cz;
   }
 
 

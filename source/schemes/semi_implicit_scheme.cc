@@ -1,6 +1,7 @@
 #include <cmath>
 #include <phasefield/core/constants.h>
 #include <phasefield/schemes/semi_implicit_scheme.h>
+#include <phasefield/solvers/lumped_elimination.h>
 #include <phasefield/solvers/newton_solver.h>
 
 namespace PhaseField
@@ -118,47 +119,24 @@ namespace PhaseField
     const double      *u        = z.block(F::U).begin();
     const double      *uk       = old_state.block(F::U).begin();
 
-    // J_UF = -(tau/(2 eps)) L + reaction M[g],  J_FU = eps^2 L + M[6U^2-2]
-    TrilinosWrappers::SparseMatrix j_uf, j_fu, s;
+    // J_UF = -(tau/(2 eps)) L + reaction M[g],  J_FU = eps^2 L + M[6U^2-2],
+    // J_UU = M[1 - reaction (2U + U^k) G], J_FF = eps M
+    LumpedTwoFieldMatrix j;
     g *= reaction;
-    ops.stiffness_plus_weighted_mass(-tau / (2 * epsilon), g, j_uf);
-    Vector diagonal(G);
-    for (unsigned int i = 0; i < n; ++i)
-      diagonal.begin()[i] = 6 * u[i] * u[i] - 2;
-    ops.stiffness_plus_weighted_mass(epsilon * epsilon, diagonal, j_fu);
-
-    // S = J_UU - J_UF (eps M)^-1 J_FU
-    Vector weight(ops.inverse_lumped_mass);
-    weight *= -1. / epsilon;
-    j_uf.mmult(s, j_fu, weight);
+    j.f_uf = -tau / (2 * epsilon);
+    j.w_uf = g;
+    j.f_fu = epsilon * epsilon;
+    j.w_fu.reinit(G, true);
+    j.uu.reinit(G, true);
     const double *m = ops.lumped_mass.begin();
     for (unsigned int i = 0; i < n; ++i)
-      diagonal.begin()[i] =
-        m[i] * (1 - reaction * (2 * u[i] + uk[i]) * G.begin()[i]);
-    ops.add_to_diagonal(diagonal, s);
-
-    // rhs = -R_U + J_UF (eps M)^-1 R_F
-    const Vector &r_u = r.block(F::U);
-    const Vector &r_f = r.block(F::F);
-    Vector        tmp(r_f), rhs(r_u);
-    tmp.scale(ops.inverse_lumped_mass);
-    tmp /= epsilon;
-    j_uf.vmult(rhs, tmp);
-    rhs -= r_u;
-    ops.zero_constrained(rhs);
-
-    Vector            &du         = dz.block(F::U);
-    Vector            &df         = dz.block(F::F);
-    const unsigned int iterations = solver.solve(s, du, rhs);
-    ops.zero_constrained(du);
-
-    // dF = (eps M)^-1 (-R_F - J_FU dU)
-    j_fu.vmult(df, du);
-    df += r_f;
-    df.scale(ops.inverse_lumped_mass);
-    df *= -1. / epsilon;
-    ops.zero_constrained(df);
-    return iterations;
+      {
+        j.w_fu.begin()[i] = 6 * u[i] * u[i] - 2;
+        j.uu.begin()[i] =
+          m[i] * (1 - reaction * (2 * u[i] + uk[i]) * G.begin()[i]);
+      }
+    j.s = epsilon;
+    return solve_lumped_elimination(ops, std::move(j), r, dz, solver);
   }
 
 

@@ -39,8 +39,7 @@ namespace PhaseField
     if (mumps != nullptr && pivoting_workspace_percent > 0)
       mumps->SetICNTL(14, pivoting_workspace_percent);
     const int symbolic = solver->SymbolicFactorization();
-    ++analysis_count;
-    const int numeric = symbolic == 0 ? solver->NumericFactorization() : 0;
+    const int numeric  = symbolic == 0 ? solver->NumericFactorization() : 0;
     AssertThrow(symbolic == 0 && numeric == 0,
                 ExcMessage("MUMPS could not factorise the Newton matrix "
                            "(error " +

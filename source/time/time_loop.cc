@@ -221,12 +221,13 @@ namespace PhaseField
       {
         old_state              = state;
         const double tried_tau = first_step_size(step);
+        Attempt      attempt{tried_tau, false};
         if (step == first_step && first_start_value != nullptr)
           state = *first_start_value;
         else
-          predict_start_value(step, state, tried_tau);
-        double           tau    = tried_tau;
-        const StepReport report = advance_on_resolving_mesh(step, state, tau);
+          attempt = predict_start_value(step, state, tried_tau);
+        const auto [report, tau] =
+          advance_on_resolving_mesh(step, state, attempt);
         if (extrapolates())
           predictor.record(old_state, state, tau, scheme.start_extrapolation());
         if (settings.regrow_step_size)
@@ -273,28 +274,27 @@ namespace PhaseField
 
 
   template <int dim>
-  void
+  typename TimeLoop<dim>::Attempt
   TimeLoop<dim>::predict_start_value(const unsigned int step,
                                      BlockVector       &state,
                                      const double       tau)
   {
-    extrapolated_start = false;
     if (!extrapolates())
-      return;
+      return {tau, false};
     BlockVector extrapolated(state);
     if (!predictor.predict(extrapolated, tau))
-      return;
+      return {tau, false};
     if (settings.verbose)
       pcout << "  step " << step
             << ": a start extrapolated from the last two steps" << std::endl;
-    extrapolated_start =
+    const bool taken =
       scheme.take_extrapolated_start(old_state, state, extrapolated, tau);
-    if (extrapolated_start)
+    if (taken)
       state.swap(extrapolated);
     if (settings.verbose)
       pcout << "  step " << step << " starts from "
-            << (extrapolated_start ? "the extrapolation" : "the last result")
-            << std::endl;
+            << (taken ? "the extrapolation" : "the last result") << std::endl;
+    return {tau, taken};
   }
 
 
@@ -337,12 +337,12 @@ namespace PhaseField
 
 
   template <int dim>
-  StepReport
+  std::pair<StepReport, double>
   TimeLoop<dim>::advance_on_resolving_mesh(const unsigned int step,
                                            BlockVector       &state,
-                                           double            &tau)
+                                           const Attempt      attempt)
   {
-    StepReport report = advance_with_halving(step, state, state_tau, tau);
+    auto [report, tau] = advance_with_halving(step, state, state_tau, attempt);
     for (unsigned int repetition = 1;
          settings.adaptive && client.repeats_unresolved_steps() &&
          !discretization.resolves_band(state);
@@ -363,11 +363,12 @@ namespace PhaseField
                  "repeating the step on the mesh refined there"
               << std::endl;
         refine_to_band(state, tau);
-        const double start_tau = tau;
-        report =
-          combine(report, advance_with_halving(step, state, start_tau, tau));
+        const auto repeated =
+          advance_with_halving(step, state, tau, Attempt{tau, false});
+        report = combine(report, repeated.first);
+        tau    = repeated.second;
       }
-    return report;
+    return {report, tau};
   }
 
 
@@ -422,23 +423,24 @@ namespace PhaseField
 
 
   template <int dim>
-  StepReport
+  std::pair<StepReport, double>
   TimeLoop<dim>::advance_with_halving(const unsigned int step,
                                       BlockVector       &state,
                                       const double       start_tau,
-                                      double            &tau)
+                                      Attempt            attempt)
   {
     TimerOutput::Scope t(timer, "time step");
     BlockVector        saved    = state;
     unsigned int       halvings = 0;
+    double            &tau      = attempt.tau;
     for (;;)
       {
         scheme.prepare_step(state, start_tau, tau);
         const StepReport report = client.advance(scheme, old_state, state, tau);
-        const bool       from_extrapolation = extrapolated_start;
-        extrapolated_start                  = false;
+        const bool       from_extrapolation = attempt.from_extrapolation;
+        attempt.from_extrapolation          = false;
         if (report.converged)
-          return report;
+          return {report, tau};
         if (from_extrapolation)
           {
             // the extrapolation is for this tau: the same step from the

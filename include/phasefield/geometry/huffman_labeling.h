@@ -141,6 +141,20 @@ namespace PhaseField
       Vector                                  &gradient);
 
     /**
+     * The linearised labeling J d = alpha'[@p u](@p d) at every point of
+     * @p grid: (1/2) Int sign(d_d u) d_d d dx_d by the same column
+     * integrals as labeling() (zero where the sign has a kink), so that
+     * add_labeling_derivative() with r is J^T r. @p u and @p d ghosted,
+     * @p d with its constraints distributed. Collective.
+     */
+    template <int dim>
+    std::vector<double>
+    labeling_derivative(const dealii::DoFHandler<dim> &dof_handler,
+                        const Vector                  &u,
+                        const Vector                  &d,
+                        const LabelingGrid<dim>       &grid);
+
+    /**
      * The labeling, at the points of @p grid, of the Q1 interpolant of
      * @p phase_field on the uniform mesh of [0,1]^dim at the grid's level:
      * the discrete labeling that the thesis takes as given (6.4). The

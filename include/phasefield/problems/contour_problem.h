@@ -8,6 +8,7 @@
 #include <phasefield/geometry/images.h>
 #include <phasefield/problems/contour_parameters.h>
 #include <phasefield/problems/phase_field_problem.h>
+#include <phasefield/schemes/mismatch_term.h>
 #include <string>
 #include <vector>
 
@@ -115,33 +116,11 @@ namespace PhaseField
     extra_values(const BlockVector &state,
                  const Energies    &energies) const override;
 
-    /** The target labeling on the current level's pixel grid. */
-    const std::vector<double> &
-    target_labeling() const
-    {
-      return target;
-    }
-
-    /** The current pixel grid. */
-    const HuffmanLabeling::LabelingGrid<dim> &
-    labeling_grid() const
-    {
-      return *grid;
-    }
-
-    /** The labeling and its mismatch with the target. */
-    struct Mismatch
-    {
-      /** alpha[U] at the points of the grid. */
-      std::vector<double> alpha;
-      /** j = gamma Int (alpha* - alpha[U])^2 dx'. */
-      double energy;
-      /** Int |alpha* - alpha[U]| dx'. */
-      double labeling_error;
-    };
-
-    /** The mismatch of U in @p state on the current pixel grid. */
-    Mismatch
+    /**
+     * The mismatch of U in @p state on the current pixel grid (the
+     * level's MismatchTerm).
+     */
+    typename MismatchTerm<dim>::Evaluation
     mismatch(const BlockVector &state) const;
 
   private:
@@ -190,10 +169,13 @@ namespace PhaseField
     Vector
     ghosted_u(const BlockVector &state) const;
 
-    const ContourParameters                            &parameters;
-    unsigned int                                        level_index = 0;
-    std::unique_ptr<HuffmanLabeling::LabelingGrid<dim>> grid;
-    std::vector<double>                                 target;
+    const ContourParameters &parameters;
+    unsigned int             level_index = 0;
+    /**
+     * The mismatch j of the current level (its pixel grid and target
+     * labeling), whose gradient the explicit step of Algorithm 6.1 takes.
+     */
+    std::unique_ptr<MismatchTerm<dim>> mismatch_term;
     /** Target = image: the image. */
     Images::GrayImage target_image;
     /**

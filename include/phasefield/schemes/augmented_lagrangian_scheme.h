@@ -11,6 +11,7 @@
 #include <phasefield/solvers/augmented_lagrangian.h>
 #include <phasefield/solvers/linear_solver.h>
 #include <phasefield/solvers/product_form.h>
+#include <phasefield/solvers/symmetric_product_matrix.h>
 
 /**
  * The nested step of thesis chapter 3 solved as in thesis chapter 7: the
@@ -32,11 +33,11 @@ namespace PhaseField
    * model), F the forcing of the biharmonic model, s = 1 (scaled, thesis
    * (7.9): f = e_out/eps) or s = eps (unscaled: f = e_out). Edge
    * restoration adds the area term 2s tau eta a_eps[U]/eps to f (its
-   * gradient and Hessian from NestedStep::add_area_gradient() and
-   * NestedStep::add_area_hessian_vmult()), and U is fixed at the DoFs of
+   * gradient and Hessian from NestedPhysics::add_terms_gradient() and
+   * NestedPhysics::add_terms_hessian_vmult()), and U is fixed at the DoFs of
    * OuterEnergy::fixed_u: the U-entries of the gradient, of every Hessian
    * product and of the preconditioner are 0 there, so that the trust
-   * region never moves them. In short, f = 2s NestedStep::outer_energy().
+   * region never moves them. In short, f = 2s NestedPhysics::outer_energy().
    * The derivatives are
    *
    *   grad f = 2s (M(U-U^k) - a M(V-U) - (tau/eps) F,  a M(V-U)),
@@ -62,7 +63,7 @@ namespace PhaseField
    * once per trust-region iterate: with a solver set by set_schur_solver()
    * (the direct solver, 2D) S_V is assembled and factorised; without one
    * it is approximated in product form, m G M^-1 G / gamma^2 with
-   * G = gamma M + sqrt(w/m) Khat (NestedStep::build_schur_factor(), the
+   * G = gamma M + sqrt(w/m) Khat (NestedPhysics::build_schur_factor(), the
    * preconditioner of the nested scheme's iterative solver) and one
    * multigrid cycle per G^-1: memory linear in the unknowns. S_V has the
    * form of the nested scheme's Schur complement without its diagonal E,
@@ -193,11 +194,11 @@ namespace PhaseField
     /** The direct solver of S_V, or null. */
     LinearSolver *schur_solver = nullptr;
     /** S_V, the V of the iterate and the coefficients of B. */
-    dealii::TrilinosWrappers::SparseMatrix schur;
-    Vector                                 schur_v;
-    double                                 schur_beta    = 0;
-    double                                 schur_penalty = 0;
-    unsigned int                           setups        = 0;
+    SymmetricProductMatrix schur;
+    Vector                 schur_v;
+    double                 schur_beta    = 0;
+    double                 schur_penalty = 0;
+    unsigned int           setups        = 0;
   };
 
   /**

@@ -2,7 +2,6 @@
 #define phasefield_schemes_semi_implicit_scheme_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/mesh/discretization.h>

@@ -45,13 +45,6 @@ namespace PhaseField
       return factorized_matrix.m();
     }
 
-    /** Number of MUMPS analyses (symbolic factorisations) so far. */
-    unsigned int
-    n_analyses() const
-    {
-      return analysis_count;
-    }
-
   private:
     /** Analyse and factorise factorized_matrix. */
     void
@@ -65,7 +58,6 @@ namespace PhaseField
     std::unique_ptr<Epetra_LinearProblem>  problem;
     std::unique_ptr<Amesos_BaseSolver>     solver;
     const unsigned int                     pivoting_workspace_percent;
-    unsigned int                           analysis_count = 0;
   };
 } // namespace PhaseField
 

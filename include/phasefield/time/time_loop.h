@@ -13,6 +13,7 @@
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/time/start_value_predictor.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PhaseField
@@ -245,13 +246,24 @@ namespace PhaseField
 
   private:
     /**
+     * One try of a time step: its size and whether its start value is the
+     * predictor's extrapolation (if it fails, the step is tried from the
+     * last result before it is halved).
+     */
+    struct Attempt
+    {
+      double tau;
+      bool   from_extrapolation;
+    };
+
+    /**
      * Replace the start value @p state of step @p step, of size @p tau (the
      * last result), by the predictor's extrapolation where the settings
      * and the scheme ask for it, the history allows it and the scheme
-     * takes it (TimeSteppingScheme::take_extrapolated_start()); sets
-     * extrapolated_start.
+     * takes it (TimeSteppingScheme::take_extrapolated_start()). Returns
+     * the attempt of the step.
      */
-    void
+    Attempt
     predict_start_value(const unsigned int step,
                         BlockVector       &state,
                         const double       tau);
@@ -300,8 +312,8 @@ namespace PhaseField
                      const bool         finished);
 
     /**
-     * Step @p step from old_state into @p state with the step size
-     * @p tau, halved on failure (@p tau is then the size taken). Where
+     * Step @p step from old_state into @p state by @p attempt, halved on
+     * failure; returns the report and the step size taken. Where
      * the interface of the result left the band of finest cells
      * (Discretization::resolves_band()), the mesh is refined there and
      * the step repeated from old_state on it, with the result as the
@@ -309,22 +321,21 @@ namespace PhaseField
      * minimiser on a mesh that resolves it, and its energy changes at the
      * next re-meshing (edge restoration at level 10: by half or more).
      */
-    StepReport
+    std::pair<StepReport, double>
     advance_on_resolving_mesh(const unsigned int step,
                               BlockVector       &state,
-                              double            &tau);
+                              const Attempt      attempt);
 
     /**
-     * Step @p step from old_state into @p state with the step size
-     * @p tau, halved on failure (@p tau is then the size taken).
-     * @p start_tau is the step size of which @p state (the start value)
-     * is the result.
+     * Step @p step from old_state into @p state by @p attempt, halved on
+     * failure; returns the report and the step size taken. @p start_tau is
+     * the step size of which @p state (the start value) is the result.
      */
-    StepReport
+    std::pair<StepReport, double>
     advance_with_halving(const unsigned int step,
                          BlockVector       &state,
                          const double       start_tau,
-                         double            &tau);
+                         Attempt            attempt);
 
     /**
      * Refine the mesh, never coarsen it, to the band of @p state, and
@@ -434,13 +445,6 @@ namespace PhaseField
      * that a step on an unchanged mesh keeps its solver.
      */
     boost::signals2::scoped_connection scheme_before_remesh;
-
-    /**
-     * Does the current attempt of the step start from the predictor's
-     * extrapolation? If it fails, the step is tried from the last result
-     * before it is halved.
-     */
-    bool extrapolated_start = false;
   };
 } // namespace PhaseField
 

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <phasefield/core/constants.h>
+#include <phasefield/schemes/energy_terms.h>
 #include <phasefield/schemes/nested/nested_model.h>
 #include <phasefield/schemes/nested/nested_step.h>
 
@@ -128,9 +129,7 @@ namespace PhaseField
   double
   NestedModel<dim>::energy_law_energy(const BlockVector &state) const
   {
-    const Energies     e     = energies(state);
-    const OuterEnergy &outer = settings.outer_energy;
-    return outer.willmore_weight * e.willmore + outer.area_weight * e.area;
+    return weighted_regularisation(settings.outer_energy, energies(state));
   }
 
 

@@ -1,6 +1,7 @@
 #include <cmath>
 #include <limits>
 #include <phasefield/schemes/energies.h>
+#include <phasefield/schemes/energy_terms.h>
 #include <phasefield/schemes/nested/nested_physics.h>
 
 namespace PhaseField
@@ -17,7 +18,36 @@ namespace PhaseField
     , coeff(coefficients)
     , weights(coefficients)
     , old_u(old_u)
+    , terms(make_outer_energy_terms(coefficients.outer,
+                                    ops,
+                                    coefficients.tau,
+                                    coefficients.epsilon))
   {}
+
+
+
+  template <int dim>
+  void
+  NestedPhysics<dim>::add_terms_gradient(const Vector &u,
+                                         const double  factor,
+                                         Vector       &g) const
+  {
+    for (const auto &term : terms)
+      term->add_gradient(u, factor, g);
+  }
+
+
+
+  template <int dim>
+  void
+  NestedPhysics<dim>::add_terms_hessian_vmult(const Vector &u,
+                                              const Vector &d,
+                                              const double  factor,
+                                              Vector       &y) const
+  {
+    for (const auto &term : terms)
+      term->add_hessian_vmult(u, d, factor, y);
+  }
 
 
 
@@ -43,79 +73,19 @@ namespace PhaseField
     const unsigned int n  = u.locally_owned_size();
     const double      *m  = ops.lumped_mass.begin();
     const double      *uk = old_u.begin();
-    const double      *f =
-      coeff.outer.forcing ? coeff.outer.forcing->begin() : nullptr;
-    const double forcing_factor = coeff.tau / coeff.epsilon;
     for (unsigned int i = 0; i < n; ++i)
       {
         const double ui = u.begin()[i], vi = v.begin()[i], pi = p.begin()[i];
         const double k_diag = m[i] * weights.k(vi);
         r_u.begin()[i]      = m[i] * ((ui - uk[i]) - a * (vi - ui) - pi);
-        if (f)
-          r_u.begin()[i] -= forcing_factor * f[i];
         r_v.begin()[i] += a * m[i] * (vi - ui) + k_diag * pi;
         r_p.begin()[i] += m[i] * ((vi - ui) + c * DoubleWell::d_psi(vi));
       }
     // the area term; no U-row at fixed U values
-    add_area_gradient(u, 1., r_u);
+    add_terms_gradient(u, 1., r_u);
     zero_fixed_u(r_u);
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(r.block(b));
-  }
-
-
-
-  template <int dim>
-  template <typename NodalPotential>
-  void
-  NestedPhysics<dim>::add_area_term(const Vector         &x,
-                                    const double          factor,
-                                    const NodalPotential &potential,
-                                    Vector               &y) const
-  {
-    if (coeff.outer.area_weight == 0)
-      return;
-    Vector l_x(x);
-    stiffness.vmult(l_x, x);
-    const double       scale = factor * weights.area_factor;
-    const double       c_u   = weights.area_potential_factor;
-    const double      *m     = ops.lumped_mass.begin();
-    const unsigned int n     = x.locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      y.begin()[i] += scale * (l_x.begin()[i] + c_u * m[i] * potential(i));
-  }
-
-
-
-  template <int dim>
-  void
-  NestedPhysics<dim>::add_area_gradient(const Vector &u,
-                                        const double  factor,
-                                        Vector       &g) const
-  {
-    add_area_term(
-      u,
-      factor,
-      [&](const unsigned int i) { return DoubleWell::d_psi(u.begin()[i]); },
-      g);
-  }
-
-
-
-  template <int dim>
-  void
-  NestedPhysics<dim>::add_area_hessian_vmult(const Vector &u,
-                                             const Vector &d,
-                                             const double  factor,
-                                             Vector       &y) const
-  {
-    add_area_term(
-      d,
-      factor,
-      [&](const unsigned int i) {
-        return DoubleWell::d2_psi(u.begin()[i]) * d.begin()[i];
-      },
-      y);
   }
 
 
@@ -317,13 +287,9 @@ namespace PhaseField
     difference    = z.block(Field::V);
     difference -= u;
     energy += 0.5 * weights.a * ops.mass_product(difference, difference);
-    if (coeff.outer.area_weight != 0)
-      // 2 tau eta a_eps[U] / (2 eps)
-      energy += weights.area_factor * area_functional(ops, u, coeff.epsilon) /
-                coeff.epsilon;
-    if (coeff.outer.forcing != nullptr)
-      // -2 tau F.U / (2 eps)
-      energy -= coeff.tau / coeff.epsilon * (*coeff.outer.forcing * u);
+    // 2 tau eta a_eps[U] / (2 eps), -2 tau F.U / (2 eps)
+    for (const auto &term : terms)
+      energy += term->value(u);
     return energy;
   }
 

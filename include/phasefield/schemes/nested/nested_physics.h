@@ -7,7 +7,9 @@
 #include <phasefield/mesh/lumped_operators.h>
 #include <phasefield/mesh/stiffness_operator.h>
 #include <phasefield/schemes/double_well.h>
+#include <phasefield/schemes/energy_terms.h>
 #include <phasefield/schemes/outer_energy.h>
+#include <vector>
 
 /**
  * The physics of one step of the nested variational time discretization
@@ -218,23 +220,24 @@ namespace PhaseField
     outer_energy_error(const BlockVector &z) const;
 
     /**
-     * @p g += @p factor tau eta (L U + M Psi'(U) / (2 eps^2)): the gradient
-     * of the area term tau eta a_eps[U] / eps of outer_energy() (the U-row
-     * of R); nothing without an area weight.
+     * @p g += @p factor times the gradient of the outer energy's terms
+     * beyond the distance and Willmore terms (make_outer_energy_terms():
+     * area, forcing) at @p u: part of R_U.
      */
     void
-    add_area_gradient(const Vector &u, const double factor, Vector &g) const;
+    add_terms_gradient(const Vector &u, const double factor, Vector &g) const;
 
     /**
-     * @p y += @p factor tau eta (L d + M[Psi''(U)] d / (2 eps^2)): the
-     * Hessian of the same area term applied to @p d (matrix-free);
-     * nothing without an area weight.
+     * @p y += @p factor times the Hessian of the same terms at @p u applied
+     * to @p d (matrix-free). apply_jacobian() and the assembled 3-field
+     * Jacobian (NestedLinearSystems) hold the area term's Hessian in the
+     * assembled form M[uu] + tau eta L (NestedWeights::uu()).
      */
     void
-    add_area_hessian_vmult(const Vector &u,
-                           const Vector &d,
-                           const double  factor,
-                           Vector       &y) const;
+    add_terms_hessian_vmult(const Vector &u,
+                            const Vector &d,
+                            const double  factor,
+                            Vector       &y) const;
 
     /**
      * Set @p u_block to 0 at the DoFs of OuterEnergy::fixed_u (a gradient
@@ -310,19 +313,6 @@ namespace PhaseField
     }
 
   private:
-    /**
-     * @p y += @p factor tau eta (L @p x + M p / (2 eps^2)) with the nodal
-     * values p_i = @p potential(i): the one loop of add_area_gradient()
-     * (x = U, p = Psi'(U)) and add_area_hessian_vmult() (x = d,
-     * p = Psi''(U) d); nothing without an area weight.
-     */
-    template <typename NodalPotential>
-    void
-    add_area_term(const Vector         &x,
-                  const double          factor,
-                  const NodalPotential &potential,
-                  Vector               &y) const;
-
     /** |x|_M. */
     double
     mass_norm(const Vector &x) const;
@@ -333,6 +323,8 @@ namespace PhaseField
     const NestedCoefficients    coeff;
     const NestedWeights         weights;
     const Vector               &old_u;
+    /** The outer energy's terms (make_outer_energy_terms()). */
+    const std::vector<std::unique_ptr<EnergyTerm>> terms;
   };
 } // namespace PhaseField
 

@@ -1,0 +1,175 @@
+#ifndef phasefield_schemes_energy_terms_h
+#define phasefield_schemes_energy_terms_h
+
+#include <memory>
+#include <phasefield/core/linear_algebra.h>
+#include <phasefield/mesh/lumped_operators.h>
+#include <phasefield/schemes/energies.h>
+#include <phasefield/schemes/outer_energy.h>
+#include <string>
+#include <vector>
+
+namespace PhaseField
+{
+  /**
+   * One term of the energy that a time step minimises, as a function of
+   * the phase field U alone: its value, gradient and Hessian-vector
+   * product (or a Gauss-Newton product where the Hessian is not defined,
+   * gauss_newton()). The nested step adds the terms of its outer energy
+   * (make_outer_energy_terms(): area, forcing) to its residual, outer
+   * energy and Jacobian; the augmented Lagrangian adds them to its
+   * objective; the contour problem's explicit mismatch step (thesis
+   * Algorithm 6.1) uses the gradient of MismatchTerm.
+   *
+   * The Willmore term (mu/2) eps ||(V-U)/ttau||^2 couples U with the
+   * inner minimiser V and is part of the nested step itself
+   * (NestedWeights::a); the fixed U values of edge restoration are a
+   * constraint, not an energy (NestedPhysics::zero_fixed_u()).
+   */
+  class EnergyTerm
+  {
+  public:
+    virtual ~EnergyTerm() = default;
+
+    /** The name, for messages. */
+    virtual std::string
+    name() const = 0;
+
+    /** Is add_hessian_vmult() a Gauss-Newton product? */
+    virtual bool
+    gauss_newton() const
+    {
+      return false;
+    }
+
+    /** The term's value at @p u. Collective. */
+    virtual double
+    value(const Vector &u) const = 0;
+
+    /** @p g += @p factor times the gradient at @p u (a dual vector). */
+    virtual void
+    add_gradient(const Vector &u, const double factor, Vector &g) const = 0;
+
+    /**
+     * @p y += @p factor H(@p u) @p d with the Hessian H (or its Gauss-Newton
+     * approximation).
+     */
+    virtual void
+    add_hessian_vmult(const Vector &u,
+                      const Vector &d,
+                      const double  factor,
+                      Vector       &y) const = 0;
+  };
+
+
+
+  /**
+   * The area term s a_eps[U] / eps of the outer energy (thesis (5.7),
+   * (6.3)), a_eps[u] = (1/2) Int eps |grad u|^2 + Psi(u)/eps, with
+   * s = tau eta: gradient s (L U + M Psi'(U) / (2 eps^2)), Hessian
+   * s (L + M[Psi''(U)] / (2 eps^2)).
+   */
+  template <int dim>
+  class AreaTerm : public EnergyTerm
+  {
+  public:
+    /** The term with the factor @p scale = tau eta on @p operators. */
+    AreaTerm(const LumpedOperators<dim> &operators,
+             const double                scale,
+             const double                epsilon);
+
+    std::string
+    name() const override
+    {
+      return "area";
+    }
+    double
+    value(const Vector &u) const override;
+    void
+    add_gradient(const Vector &u,
+                 const double  factor,
+                 Vector       &g) const override;
+    void
+    add_hessian_vmult(const Vector &u,
+                      const Vector &d,
+                      const double  factor,
+                      Vector       &y) const override;
+
+  private:
+    /**
+     * @p y += @p factor s (L @p x + M p / (2 eps^2)) with the nodal
+     * values p_i = @p potential(i): the one loop of the gradient (x = U,
+     * p = Psi'(U)) and the Hessian product (x = d, p = Psi''(U) d).
+     */
+    template <typename NodalPotential>
+    void
+    add_term(const Vector         &x,
+             const double          factor,
+             const NodalPotential &potential,
+             Vector               &y) const;
+
+    const LumpedOperators<dim> &ops;
+    const double                scale;
+    const double                epsilon;
+  };
+
+
+
+  /**
+   * The forcing term -s F.U of the outer energy (the biharmonic model
+   * problem, thesis chapter 4), with F = M I_h(f) and s = tau / eps:
+   * gradient -s F, Hessian 0.
+   */
+  class ForcingTerm : public EnergyTerm
+  {
+  public:
+    /** The term with the nodal forcing @p forcing (referred to). */
+    ForcingTerm(const Vector &forcing, const double scale);
+
+    std::string
+    name() const override
+    {
+      return "forcing";
+    }
+    double
+    value(const Vector &u) const override;
+    void
+    add_gradient(const Vector &u,
+                 const double  factor,
+                 Vector       &g) const override;
+    void
+    add_hessian_vmult(const Vector &u,
+                      const Vector &d,
+                      const double  factor,
+                      Vector       &y) const override;
+
+  private:
+    const Vector &forcing;
+    const double  scale;
+  };
+
+
+
+  /**
+   * The terms of @p outer beyond the distance and Willmore terms for a
+   * step of size @p tau, in the units of the nested step's residual (the
+   * outer energy divided by 2 eps): the area term with s = tau eta and
+   * the forcing with s = tau / eps, where their weights are set.
+   */
+  template <int dim>
+  std::vector<std::unique_ptr<EnergyTerm>>
+  make_outer_energy_terms(const OuterEnergy          &outer,
+                          const LumpedOperators<dim> &operators,
+                          const double                tau,
+                          const double                epsilon);
+
+  /**
+   * mu W + eta A for the energies @p e with the weights of @p outer: the
+   * one place that combines them (the energy law, the contour problem's
+   * total energy).
+   */
+  double
+  weighted_regularisation(const OuterEnergy &outer, const Energies &e);
+} // namespace PhaseField
+
+#endif

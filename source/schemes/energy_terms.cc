@@ -1,0 +1,153 @@
+#include <phasefield/schemes/double_well.h>
+#include <phasefield/schemes/energy_terms.h>
+
+namespace PhaseField
+{
+  template <int dim>
+  AreaTerm<dim>::AreaTerm(const LumpedOperators<dim> &operators,
+                          const double                scale,
+                          const double                epsilon)
+    : ops(operators)
+    , scale(scale)
+    , epsilon(epsilon)
+  {}
+
+
+
+  template <int dim>
+  double
+  AreaTerm<dim>::value(const Vector &u) const
+  {
+    return scale * area_functional(ops, u, epsilon) / epsilon;
+  }
+
+
+
+  template <int dim>
+  template <typename NodalPotential>
+  void
+  AreaTerm<dim>::add_term(const Vector         &x,
+                          const double          factor,
+                          const NodalPotential &potential,
+                          Vector               &y) const
+  {
+    Vector l_x(x);
+    ops.stiffness_operator().vmult(l_x, x);
+    const double       s   = factor * scale;
+    const double       c_u = 1. / (2 * epsilon * epsilon);
+    const double      *m   = ops.lumped_mass.begin();
+    const unsigned int n   = x.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      y.begin()[i] += s * (l_x.begin()[i] + c_u * m[i] * potential(i));
+  }
+
+
+
+  template <int dim>
+  void
+  AreaTerm<dim>::add_gradient(const Vector &u,
+                              const double  factor,
+                              Vector       &g) const
+  {
+    add_term(
+      u,
+      factor,
+      [&](const unsigned int i) { return DoubleWell::d_psi(u.begin()[i]); },
+      g);
+  }
+
+
+
+  template <int dim>
+  void
+  AreaTerm<dim>::add_hessian_vmult(const Vector &u,
+                                   const Vector &d,
+                                   const double  factor,
+                                   Vector       &y) const
+  {
+    add_term(
+      d,
+      factor,
+      [&](const unsigned int i) {
+        return DoubleWell::d2_psi(u.begin()[i]) * d.begin()[i];
+      },
+      y);
+  }
+
+
+
+  ForcingTerm::ForcingTerm(const Vector &forcing, const double scale)
+    : forcing(forcing)
+    , scale(scale)
+  {}
+
+
+
+  double
+  ForcingTerm::value(const Vector &u) const
+  {
+    return -scale * (forcing * u);
+  }
+
+
+
+  void
+  ForcingTerm::add_gradient(const Vector &,
+                            const double factor,
+                            Vector      &g) const
+  {
+    g.add(-factor * scale, forcing);
+  }
+
+
+
+  void
+  ForcingTerm::add_hessian_vmult(const Vector &,
+                                 const Vector &,
+                                 const double,
+                                 Vector &) const
+  {}
+
+
+
+  template <int dim>
+  std::vector<std::unique_ptr<EnergyTerm>>
+  make_outer_energy_terms(const OuterEnergy          &outer,
+                          const LumpedOperators<dim> &operators,
+                          const double                tau,
+                          const double                epsilon)
+  {
+    std::vector<std::unique_ptr<EnergyTerm>> terms;
+    if (outer.area_weight != 0)
+      terms.push_back(std::make_unique<AreaTerm<dim>>(operators,
+                                                      tau * outer.area_weight,
+                                                      epsilon));
+    if (outer.forcing != nullptr)
+      terms.push_back(
+        std::make_unique<ForcingTerm>(*outer.forcing, tau / epsilon));
+    return terms;
+  }
+
+
+
+  double
+  weighted_regularisation(const OuterEnergy &outer, const Energies &e)
+  {
+    return outer.willmore_weight * e.willmore + outer.area_weight * e.area;
+  }
+
+
+
+  template class AreaTerm<2>;
+  template class AreaTerm<3>;
+  template std::vector<std::unique_ptr<EnergyTerm>>
+  make_outer_energy_terms(const OuterEnergy &,
+                          const LumpedOperators<2> &,
+                          const double,
+                          const double);
+  template std::vector<std::unique_ptr<EnergyTerm>>
+  make_outer_energy_terms(const OuterEnergy &,
+                          const LumpedOperators<3> &,
+                          const double,
+                          const double);
+} // namespace PhaseField

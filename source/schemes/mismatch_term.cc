@@ -1,0 +1,129 @@
+#include <cmath>
+#include <phasefield/schemes/mismatch_term.h>
+
+namespace PhaseField
+{
+  template <int dim>
+  MismatchTerm<dim>::MismatchTerm(const Discretization<dim> &discretization,
+                                  const unsigned int         level,
+                                  std::vector<double>        target,
+                                  const double               gamma)
+    : discretization(discretization)
+    , labeling_grid(level)
+    , target(std::move(target))
+    , gamma(gamma)
+  {
+    AssertDimension(this->target.size(), labeling_grid.size());
+  }
+
+
+
+  template <int dim>
+  Vector
+  MismatchTerm<dim>::ghosted(const Vector &u) const
+  {
+    const LumpedOperators<dim> &ops = discretization.get_operators();
+    Vector                      v(ops.locally_owned_dofs,
+             ops.locally_relevant_dofs,
+             u.get_mpi_communicator());
+    v = u;
+    return v;
+  }
+
+
+
+  template <int dim>
+  typename MismatchTerm<dim>::Evaluation
+  MismatchTerm<dim>::evaluate(const Vector &u) const
+  {
+    Evaluation e;
+    e.alpha = HuffmanLabeling::labeling(discretization.get_dof_handler(),
+                                        ghosted(u),
+                                        labeling_grid);
+    const unsigned int  n = labeling_grid.size();
+    std::vector<double> squared(n), absolute(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        squared[i]  = std::pow(target[i] - e.alpha[i], 2);
+        absolute[i] = std::abs(target[i] - e.alpha[i]);
+      }
+    e.energy         = gamma * labeling_grid.integrate(squared);
+    e.labeling_error = labeling_grid.integrate(absolute);
+    return e;
+  }
+
+
+
+  template <int dim>
+  double
+  MismatchTerm<dim>::value(const Vector &u) const
+  {
+    return evaluate(u).energy;
+  }
+
+
+
+  template <int dim>
+  void
+  MismatchTerm<dim>::add_transposed(const Vector              &u,
+                                    const std::vector<double> &residual,
+                                    const double               factor,
+                                    Vector                    &y) const
+  {
+    std::vector<double> r(labeling_grid.size());
+    for (unsigned int i = 0; i < labeling_grid.size(); ++i)
+      r[i] = 2 * gamma * labeling_grid.weight(i) * residual[i];
+    Vector product(y);
+    product = 0;
+    HuffmanLabeling::add_labeling_derivative(discretization.get_dof_handler(),
+                                             discretization.get_constraints(),
+                                             u,
+                                             labeling_grid,
+                                             r,
+                                             product);
+    y.add(factor, product);
+  }
+
+
+
+  template <int dim>
+  void
+  MismatchTerm<dim>::add_gradient(const Vector &u,
+                                  const double  factor,
+                                  Vector       &g) const
+  {
+    const Vector        u_ghosted = ghosted(u);
+    std::vector<double> residual =
+      HuffmanLabeling::labeling(discretization.get_dof_handler(),
+                                u_ghosted,
+                                labeling_grid);
+    for (unsigned int i = 0; i < labeling_grid.size(); ++i)
+      residual[i] -= target[i];
+    add_transposed(u_ghosted, residual, factor, g);
+  }
+
+
+
+  template <int dim>
+  void
+  MismatchTerm<dim>::add_hessian_vmult(const Vector &u,
+                                       const Vector &d,
+                                       const double  factor,
+                                       Vector       &y) const
+  {
+    const Vector u_ghosted = ghosted(u);
+    Vector       d_constrained(d);
+    discretization.get_constraints().distribute(d_constrained);
+    const std::vector<double> jd =
+      HuffmanLabeling::labeling_derivative(discretization.get_dof_handler(),
+                                           u_ghosted,
+                                           ghosted(d_constrained),
+                                           labeling_grid);
+    add_transposed(u_ghosted, jd, factor, y);
+  }
+
+
+
+  template class MismatchTerm<2>;
+  template class MismatchTerm<3>;
+} // namespace PhaseField
