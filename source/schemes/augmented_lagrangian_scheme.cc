@@ -380,10 +380,11 @@ namespace PhaseField
     const Discretization<dim> &discretization,
     const ConditionalOStream  &pcout)
     : settings(settings)
+    , parameters(settings.own_parameters<AugmentedLagrangianParameters>())
     , discretization(discretization)
     , pcout(pcout)
     , nested(settings, discretization, pcout)
-    , next_penalty(settings.augmented_lagrangian.initial_penalty)
+    , next_penalty(parameters.initial_penalty)
   {
     if (LinearSolver::resolve_type(settings.linear_solver.type, dim) ==
         LinearSolverType::direct)
@@ -399,7 +400,7 @@ namespace PhaseField
   std::string
   AugmentedLagrangianScheme<dim>::name() const
   {
-    return scheme_name(Scheme::augmented_lagrangian);
+    return "augmented lagrangian";
   }
 
 
@@ -443,9 +444,9 @@ namespace PhaseField
   {
     // V from the inner problem (Algorithm 3.1), P = P0 at every node
     nested.initialize(state, tau);
-    state.block(Field::P) = settings.augmented_lagrangian.initial_multiplier;
+    state.block(Field::P) = parameters.initial_multiplier;
     discretization.distribute_constraints(state);
-    next_penalty = settings.augmented_lagrangian.initial_penalty;
+    next_penalty = parameters.initial_penalty;
   }
 
 
@@ -466,7 +467,7 @@ namespace PhaseField
   AugmentedLagrangianControl
   AugmentedLagrangianScheme<dim>::control() const
   {
-    const AugmentedLagrangianParameters &prm = settings.augmented_lagrangian;
+    const AugmentedLagrangianParameters &prm = parameters;
     AugmentedLagrangianControl           c;
     c.gradient_tolerance             = prm.gradient_tolerance;
     c.constraint_tolerance           = prm.constraint_tolerance;
@@ -489,7 +490,7 @@ namespace PhaseField
     AugmentedLagrangianStep<dim> step(discretization,
                                       nested.coefficients(tau),
                                       old_state.block(Field::U),
-                                      settings.augmented_lagrangian.scaled);
+                                      parameters.scaled);
     if (schur_solver)
       step.set_schur_solver(*schur_solver);
     BlockVector start        = step.make_point();
@@ -526,9 +527,8 @@ namespace PhaseField
             report.converged = al.converged;
             if (al.converged)
               next_penalty =
-                std::max(al.final_penalty /
-                           settings.augmented_lagrangian.penalty_reduction,
-                         settings.augmented_lagrangian.initial_penalty);
+                std::max(al.final_penalty / parameters.penalty_reduction,
+                         parameters.initial_penalty);
             else
               report_failure(al);
             break;
@@ -565,8 +565,8 @@ namespace PhaseField
   {
     report.newton_iterations += al.tr_iterations;
     report.linear_iterations += al.cg_iterations;
-    report.al_iterations += al.outer_iterations;
-    report.tr_iterations += al.tr_iterations;
+    report.add_count("al_iterations", al.outer_iterations);
+    report.add_count("tr_iterations", al.tr_iterations);
     if (report.initial_residual_norm == 0)
       report.initial_residual_norm =
         std::max(al.initial_gradient_norm, al.initial_constraint_norm);
@@ -611,8 +611,9 @@ namespace PhaseField
     if (settings.outer_energy.has_restoration_terms())
       // the nested scheme re-solved V and its adjoint P for the new mesh;
       // the multiplier of the augmented Lagrangian is -2s times that P
-      state.block(Field::P) *= -AugmentedLagrangianStep<dim>::objective_scale(
-        nested.coefficients(tau), settings.augmented_lagrangian.scaled);
+      state.block(Field::P) *=
+        -AugmentedLagrangianStep<dim>::objective_scale(nested.coefficients(tau),
+                                                       parameters.scaled);
   }
 
 
@@ -622,7 +623,7 @@ namespace PhaseField
   AugmentedLagrangianScheme<dim>::reset_solver()
   {
     nested.reset_solver();
-    next_penalty = settings.augmented_lagrangian.initial_penalty;
+    next_penalty = parameters.initial_penalty;
   }
 
 

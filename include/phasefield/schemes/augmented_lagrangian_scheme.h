@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
+#include <phasefield/schemes/augmented_lagrangian_parameters.h>
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/solvers/augmented_lagrangian.h>
@@ -295,9 +296,11 @@ namespace PhaseField
     void
     report_failure(const AugmentedLagrangianReport &al) const;
 
-    const SchemeSettings              settings;
-    const Discretization<dim>        &discretization;
-    const dealii::ConditionalOStream &pcout;
+    const SchemeSettings settings;
+    /** The subsection `Augmented Lagrangian`, which the scheme owns. */
+    const AugmentedLagrangianParameters parameters;
+    const Discretization<dim>          &discretization;
+    const dealii::ConditionalOStream   &pcout;
     /** Initialisation, energies and energy law of the same problem. */
     NestedScheme<dim> nested;
     /** The penalty the next step starts with. */
