@@ -52,7 +52,7 @@ end
       const unsigned int n_steps,
       const bool         resume)
   {
-    return Testing::run_with_checkpoints<WillmoreParameters,
+    return Testing::run_with_checkpoints<WillmoreFlowParameters,
                                          WillmoreProblem<2>>(base_prm,
                                                              directory,
                                                              n_steps,

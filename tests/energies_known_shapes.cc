@@ -14,7 +14,7 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   dealii::ParameterHandler                 prm;
-  PhaseField::WillmoreParameters::declare_parameters(prm);
+  PhaseField::WillmoreFlowParameters::declare_parameters(prm);
   prm.parse_input_from_string(R"(
 set Dimension = 2
 subsection Geometry
@@ -38,7 +38,7 @@ subsection Output
 end
 set Output directory = results
 )");
-  PhaseField::WillmoreParameters parameters;
+  PhaseField::WillmoreFlowParameters parameters;
   parameters.parse_parameters(prm);
   PhaseField::WillmoreProblem<2> problem(parameters);
   problem.run();

@@ -89,10 +89,10 @@ namespace Testing
                const std::string        &directory = "results")
   {
     dealii::ParameterHandler prm;
-    PhaseField::WillmoreParameters::declare_parameters(prm);
+    PhaseField::WillmoreFlowParameters::declare_parameters(prm);
     prm.parse_input_from_string(prm_text +
                                 "\nset Output directory = " + directory + "\n");
-    PhaseField::WillmoreParameters parameters;
+    PhaseField::WillmoreFlowParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.dimension == 2)
       PhaseField::WillmoreProblem<2>(parameters).run();

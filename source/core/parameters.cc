@@ -278,156 +278,6 @@ namespace PhaseField
 
 
 
-  namespace
-  {
-    /** The names of `Time stepping / Scheme`, in the order of Scheme. */
-    const std::vector<std::pair<Scheme, std::string>> scheme_names = {
-      {Scheme::nested, "nested"},
-      {Scheme::semi_implicit, "semi-implicit"},
-      {Scheme::augmented_lagrangian, "augmented lagrangian"}};
-  } // namespace
-
-
-
-  std::string
-  scheme_name(const Scheme scheme)
-  {
-    for (const auto &[value, name] : scheme_names)
-      if (value == scheme)
-        return name;
-    throw InputError("Unknown <Time stepping / Scheme>.");
-  }
-
-
-
-  Scheme
-  parse_scheme(const std::string &name)
-  {
-    for (const auto &[value, value_name] : scheme_names)
-      if (value_name == name)
-        return value;
-    throw InputError("Unknown <Time stepping / Scheme> = <" + name +
-                     ">; use one of " + scheme_selection() + ".");
-  }
-
-
-
-  std::string
-  scheme_selection()
-  {
-    std::string selection;
-    for (const auto &entry : scheme_names)
-      selection += (selection.empty() ? "" : "|") + entry.second;
-    return selection;
-  }
-
-
-
-  void
-  AugmentedLagrangianParameters::declare_parameters(ParameterHandler &prm)
-  {
-    const AugmentedLagrangianParameters defaults;
-    const auto                          text = [](const auto value) {
-      std::ostringstream stream;
-      stream << value;
-      return stream.str();
-    };
-    prm.enter_subsection("Augmented Lagrangian");
-    prm.declare_entry("Gradient tolerance",
-                      text(defaults.gradient_tolerance),
-                      Patterns::Double(0),
-                      "w*: the outer loop (thesis Algorithm 2.1) stops when "
-                      "||grad l_A||_L2 <= w* and ||C||_L2 <= eta*.");
-    prm.declare_entry("Constraint tolerance",
-                      text(defaults.constraint_tolerance),
-                      Patterns::Double(0),
-                      "eta*: tolerance of the L2 norm of the constraint "
-                      "C(U,V) (the inner Allen-Cahn equation).");
-    prm.declare_entry("Initial penalty",
-                      text(defaults.initial_penalty),
-                      Patterns::Double(0),
-                      "lambda0: the penalty of the first step; each later "
-                      "step starts from max(lambda_final / <Penalty "
-                      "reduction per step>, lambda0).");
-    prm.declare_entry(
-      "Penalty reduction per step",
-      text(defaults.penalty_reduction),
-      Patterns::Double(1),
-      "Each step after the first starts from the final penalty of the "
-      "previous step divided by this, but not below lambda0 (thesis: "
-      "100^2). Measured (doc/willmore_flow.md, \"Penalty per step\"): 10 "
-      "needs about 3 times fewer trust-region iterations per step than "
-      "100^2 on the level-7 quarter circle and edge-restoration cross.");
-    prm.declare_entry("Initial multiplier",
-                      text(defaults.initial_multiplier),
-                      Patterns::Double(),
-                      "P0: the multiplier at every node at the start of the "
-                      "run (later steps start from the last one).");
-    prm.declare_entry("Scaled",
-                      defaults.scaled ? "true" : "false",
-                      Patterns::Bool(),
-                      "true: the outer energy divided by epsilon (thesis "
-                      "(7.9)); false: e_out itself.");
-    prm.declare_entry("Maximum outer iterations",
-                      text(defaults.max_outer_iterations),
-                      Patterns::Integer(1),
-                      "Multiplier/penalty updates per step before the step "
-                      "is halved.");
-    prm.declare_entry("Maximum trust-region iterations",
-                      text(defaults.max_trust_region_iterations),
-                      Patterns::Integer(1),
-                      "Trust-region iterations per minimisation of l_A "
-                      "before the step is halved.");
-    prm.declare_entry("Maximum CG iterations",
-                      text(defaults.max_cg_iterations),
-                      Patterns::Integer(1),
-                      "Truncated-CG iterations per trust-region step.");
-    prm.declare_entry("Trust-region solver",
-                      defaults.rol_trust_region ? "rol" : "own",
-                      Patterns::Selection("own|rol"),
-                      "own: our Steihaug-Toint trust region "
-                      "(solvers/trust_region.h); rol: Trilinos ROL's "
-                      "trust-region algorithm with truncated CG, the same "
-                      "constants, Hessian products and preconditioner "
-                      "(solvers/rol_trust_region.h), for comparison.");
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  AugmentedLagrangianParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Augmented Lagrangian");
-    gradient_tolerance   = prm.get_double("Gradient tolerance");
-    constraint_tolerance = prm.get_double("Constraint tolerance");
-    initial_penalty      = prm.get_double("Initial penalty");
-    penalty_reduction    = prm.get_double("Penalty reduction per step");
-    initial_multiplier   = prm.get_double("Initial multiplier");
-    scaled               = prm.get_bool("Scaled");
-    max_outer_iterations = prm.get_integer("Maximum outer iterations");
-    max_trust_region_iterations =
-      prm.get_integer("Maximum trust-region iterations");
-    max_cg_iterations = prm.get_integer("Maximum CG iterations");
-    rol_trust_region  = prm.get("Trust-region solver") == "rol";
-    prm.leave_subsection();
-    if (!(gradient_tolerance > 0) || !(constraint_tolerance > 0))
-      throw InputError("<Augmented Lagrangian / Gradient tolerance> and "
-                       "<Constraint tolerance> must be positive.");
-    if (!(initial_penalty > 0))
-      throw InputError(
-        "<Augmented Lagrangian / Initial penalty> must be positive.");
-    // measured: on 2 ranks ROL's trust region does not reach the gradient
-    // tolerance of tests/rol_trust_region.cc (not investigated)
-    if (rol_trust_region &&
-        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-      throw InputError("<Augmented Lagrangian / Trust-region solver> = rol "
-                       "runs on one MPI rank only (a comparison option); "
-                       "use <Trust-region solver> = own with several ranks.");
-  }
-
-
-
   void
   ModelParameters::declare_parameters(ParameterHandler &prm,
                                       const bool        with_step_counts)
@@ -441,18 +291,6 @@ namespace PhaseField
     prm.leave_subsection();
 
     prm.enter_subsection("Time stepping");
-    prm.declare_entry("Scheme",
-                      "nested",
-                      Patterns::Selection(scheme_selection()),
-                      "nested: the nested variational time discretization "
-                      "(thesis chapter 3), Newton on the (U,V,P) "
-                      "saddle-point system. semi-implicit: the Du-Liu-Wang "
-                      "scheme (thesis section 5.2), Newton on (U,F) with "
-                      "F = eps Lap U + (2/eps) U(1-U^2); it does not use "
-                      "Inner tau. augmented lagrangian: the nested step as "
-                      "the minimisation of an augmented Lagrangian in "
-                      "(U,V) by a trust-region method (thesis chapter 7; "
-                      "subsection Augmented Lagrangian).");
     prm.declare_entry("Tau",
                       "h^2",
                       Patterns::Anything(),
@@ -534,7 +372,6 @@ namespace PhaseField
     epsilon_expression = prm.get("Epsilon");
     prm.leave_subsection();
     prm.enter_subsection("Time stepping");
-    scheme               = parse_scheme(prm.get("Scheme"));
     tau_expression       = prm.get("Tau");
     inner_tau_expression = prm.get("Inner tau");
     n_steps      = with_step_counts ? prm.get_integer("Number of steps") : 0;
@@ -802,7 +639,6 @@ namespace PhaseField
     LinearSolverParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     CheckpointParameters::declare_parameters(prm);
-    AugmentedLagrangianParameters::declare_parameters(prm);
   }
 
 
@@ -820,7 +656,6 @@ namespace PhaseField
     linear_solver.parse_parameters(prm);
     output.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
-    augmented_lagrangian.parse_parameters(prm);
     if (!multilevel)
       set_finest_level(mesh.finest_level);
     check_coarse_start_level();

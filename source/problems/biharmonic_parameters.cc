@@ -1,6 +1,7 @@
 #include <cmath>
 #include <phasefield/core/parameters.h>
 #include <phasefield/problems/biharmonic_parameters.h>
+#include <phasefield/schemes/scheme_registry.h>
 
 namespace PhaseField
 {
@@ -138,15 +139,6 @@ namespace PhaseField
   BiharmonicTimeParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    prm.declare_entry("Scheme",
-                      "nested",
-                      Patterns::Selection("nested|augmented lagrangian"),
-                      "nested: Newton on the (U,V,P) system of the nested "
-                      "scheme (one factorisation per mesh). augmented "
-                      "lagrangian: each step as the minimisation of an "
-                      "augmented Lagrangian by a trust-region method "
-                      "(thesis section 7.1; subsection Augmented "
-                      "Lagrangian).");
     prm.declare_entry("Tau",
                       "h^2",
                       Patterns::Anything(),
@@ -172,7 +164,6 @@ namespace PhaseField
   BiharmonicTimeParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    scheme               = parse_scheme(prm.get("Scheme"));
     tau_expression       = prm.get("Tau");
     inner_tau_expression = prm.get("Inner tau");
     final_time           = prm.get_double("Final time");
@@ -192,7 +183,7 @@ namespace PhaseField
     BiharmonicProblemParameters::declare_parameters(prm);
     ConvergenceParameters::declare_parameters(prm);
     BiharmonicTimeParameters::declare_parameters(prm);
-    AugmentedLagrangianParameters::declare_parameters(prm);
+    declare_scheme_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
   }
 
@@ -206,7 +197,10 @@ namespace PhaseField
     problem.parse_parameters(prm);
     convergence.parse_parameters(prm);
     time.parse_parameters(prm);
-    augmented_lagrangian.parse_parameters(prm);
+    ModelTerms needed;
+    needed.forcing          = true;
+    needed.biharmonic_model = true;
+    time.scheme = parse_scheme_parameters(prm, needed, "biharmonic_flow");
     linear_solver.parse_parameters(prm);
     // Validate the step sizes of every level before any computation.
     for (const unsigned int level : convergence.levels)

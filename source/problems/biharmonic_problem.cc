@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <phasefield/core/statistics.h>
 #include <phasefield/problems/biharmonic_problem.h>
+#include <phasefield/schemes/scheme_registry.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 
 namespace PhaseField
@@ -282,7 +283,6 @@ namespace PhaseField
     {
       SchemeSettings s;
       s.scheme                    = parameters.time.scheme;
-      s.augmented_lagrangian      = parameters.augmented_lagrangian;
       s.epsilon                   = 1;
       s.inner_tau                 = inner_tau;
       s.double_well               = false;
@@ -426,9 +426,7 @@ namespace PhaseField
                                "did not reach round-off; augmented "
                                "Lagrangian: raise the limits of subsection "
                                "Augmented Lagrangian)."));
-        total_report.al_iterations += report.al_iterations;
-        total_report.tr_iterations += report.tr_iterations;
-        total_report.linear_iterations += report.linear_iterations;
+        total_report = combine(total_report, report);
         if (step % progress_interval == 0 || step == step_sizes.n_steps)
           pcout << "  level " << level << ": step " << step << " of "
                 << step_sizes.n_steps << ", t = " << time << ", "
@@ -446,9 +444,11 @@ namespace PhaseField
     result.n_dofs    = discretization.n_dofs();
     result.relative_residual =
       report.final_residual_norm / report.initial_residual_norm;
-    result.n_factorizations  = scheme->n_factorizations();
-    result.al_iterations     = total_report.al_iterations;
-    result.tr_iterations     = total_report.tr_iterations;
+    result.n_factorizations = scheme->n_factorizations();
+    result.al_iterations =
+      static_cast<unsigned int>(total_report.count("al_iterations"));
+    result.tr_iterations =
+      static_cast<unsigned int>(total_report.count("tr_iterations"));
     result.linear_iterations = total_report.linear_iterations;
     compute_errors(time, result);
     result.wall_seconds = wall_timer.wall_time();

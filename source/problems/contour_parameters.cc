@@ -1,5 +1,6 @@
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/contour_parameters.h>
+#include <phasefield/schemes/scheme_registry.h>
 
 namespace PhaseField
 {
@@ -214,6 +215,7 @@ namespace PhaseField
   ContourParameters::declare_parameters(ParameterHandler &prm)
   {
     WillmoreParameters::declare_parameters(prm, "", "", true);
+    declare_scheme_parameters(prm);
     prm.enter_subsection("Geometry");
     prm.set("Shape", "circle");
     prm.leave_subsection();
@@ -239,10 +241,12 @@ namespace PhaseField
     multilevel.parse_parameters(prm,
                                 willmore.mesh.finest_level,
                                 willmore.mesh.coarsest_level);
-    if (willmore.model.scheme != Scheme::nested)
-      throw InputError("shape_from_contour needs <Time stepping / Scheme> = "
-                       "nested: the Willmore and area weights of its "
-                       "regularisation are part of the nested scheme only.");
+    ModelTerms needed;
+    needed.area_term       = true;
+    needed.willmore_weight = true;
+    needed.mismatch_term   = true;
+    willmore.model.scheme =
+      parse_scheme_parameters(prm, needed, "shape_from_contour");
     // a target shape that cannot be made is a mistake in the file: say so
     // before any mesh exists
     if (!target.is_image())

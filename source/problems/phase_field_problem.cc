@@ -6,6 +6,7 @@
 #include <phasefield/core/statistics.h>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/phase_field_problem.h>
+#include <phasefield/schemes/scheme_registry.h>
 
 namespace PhaseField
 {
@@ -53,14 +54,13 @@ namespace PhaseField
   PhaseFieldProblem<dim>::create_scheme(const WillmoreParameters &parameters)
   {
     SchemeSettings settings;
-    settings.scheme               = parameters.model.scheme;
-    settings.epsilon              = parameters.model.epsilon;
-    settings.inner_tau            = parameters.model.inner_tau;
-    settings.outer_energy         = setup.outer_energy;
-    settings.newton               = parameters.newton;
-    settings.linear_solver        = parameters.linear_solver;
-    settings.augmented_lagrangian = parameters.augmented_lagrangian;
-    settings.verbose              = parameters.output.verbose;
+    settings.scheme        = parameters.model.scheme;
+    settings.epsilon       = parameters.model.epsilon;
+    settings.inner_tau     = parameters.model.inner_tau;
+    settings.outer_energy  = setup.outer_energy;
+    settings.newton        = parameters.newton;
+    settings.linear_solver = parameters.linear_solver;
+    settings.verbose       = parameters.output.verbose;
     scheme = create_time_stepping_scheme<dim>(settings, discretization, pcout);
   }
 

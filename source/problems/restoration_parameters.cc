@@ -1,5 +1,6 @@
 #include <cmath>
 #include <phasefield/problems/restoration_parameters.h>
+#include <phasefield/schemes/scheme_registry.h>
 
 namespace PhaseField
 {
@@ -133,6 +134,7 @@ namespace PhaseField
       "Sizes = length, width), image (Image file, Threshold); see "
       "<Restoration / Damage>.");
     RestorationParameters::declare_parameters(prm);
+    declare_scheme_parameters(prm);
   }
 
 
@@ -145,11 +147,11 @@ namespace PhaseField
     if (willmore.dimension != 2)
       throw InputError("edge_restoration works in 2D only: <Dimension> must "
                        "be 2.");
-    if (willmore.model.scheme == Scheme::semi_implicit)
-      throw InputError("edge_restoration needs <Time stepping / Scheme> = "
-                       "nested or augmented lagrangian: the area term and the "
-                       "fixed values outside the region are not part of the "
-                       "semi-implicit scheme.");
+    ModelTerms needed;
+    needed.area_term    = true;
+    needed.fixed_values = true;
+    willmore.model.scheme =
+      parse_scheme_parameters(prm, needed, "edge_restoration");
     const std::string &shape = willmore.geometry.shape;
     if (shape == "image" && restoration.image_file.empty())
       throw InputError("Shape = image needs <Geometry / Image file>.");

@@ -1,9 +1,28 @@
 #include <limits>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/willmore_problem.h>
+#include <phasefield/schemes/scheme_registry.h>
 
 namespace PhaseField
 {
+  void
+  WillmoreFlowParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    WillmoreParameters::declare_parameters(prm);
+    declare_scheme_parameters(prm);
+  }
+
+
+
+  void
+  WillmoreFlowParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    WillmoreParameters::parse_parameters(prm);
+    model.scheme = parse_scheme_parameters(prm);
+  }
+
+
+
   namespace
   {
     /** Willmore flow of the `Geometry` shape. */

@@ -18,10 +18,10 @@ main(int argc, char **argv)
     argv,
     "willmore_flow",
     [](dealii::ParameterHandler &prm) {
-      WillmoreParameters::declare_parameters(prm);
+      WillmoreFlowParameters::declare_parameters(prm);
     },
     [](dealii::ParameterHandler &prm) {
-      WillmoreParameters parameters;
+      WillmoreFlowParameters parameters;
       parameters.parse_parameters(prm);
       if (parameters.dimension == 2)
         WillmoreProblem<2>(parameters).run();

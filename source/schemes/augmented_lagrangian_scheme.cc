@@ -349,11 +349,12 @@ namespace PhaseField
     const Discretization<dim> &discretization,
     const ConditionalOStream  &pcout)
     : settings(settings)
+    , parameters(settings.own_parameters<AugmentedLagrangianParameters>())
     , discretization(discretization)
     , pcout(pcout)
     , model(settings, discretization)
     , solver_type(LinearSolver::resolve_type(settings.linear_solver.type, dim))
-    , next_penalty(settings.augmented_lagrangian.initial_penalty)
+    , next_penalty(parameters.initial_penalty)
   {
     if (solver_type == LinearSolverType::direct)
       schur_solver = std::make_unique<LinearSolver>(
@@ -368,7 +369,7 @@ namespace PhaseField
   std::string
   AugmentedLagrangianScheme<dim>::name() const
   {
-    return scheme_name(Scheme::augmented_lagrangian);
+    return "augmented lagrangian";
   }
 
 
@@ -412,9 +413,9 @@ namespace PhaseField
   {
     // V from the inner problem (Algorithm 3.1), P = P0 at every node
     model.initialize(state, tau, solver_type);
-    state.block(Field::P) = settings.augmented_lagrangian.initial_multiplier;
+    state.block(Field::P) = parameters.initial_multiplier;
     discretization.distribute_constraints(state);
-    next_penalty = settings.augmented_lagrangian.initial_penalty;
+    next_penalty = parameters.initial_penalty;
   }
 
 
@@ -435,15 +436,14 @@ namespace PhaseField
   AugmentedLagrangianControl
   AugmentedLagrangianScheme<dim>::control() const
   {
-    const AugmentedLagrangianParameters &prm = settings.augmented_lagrangian;
-    AugmentedLagrangianControl           c;
-    c.gradient_tolerance             = prm.gradient_tolerance;
-    c.constraint_tolerance           = prm.constraint_tolerance;
+    AugmentedLagrangianControl c;
+    c.gradient_tolerance             = parameters.gradient_tolerance;
+    c.constraint_tolerance           = parameters.constraint_tolerance;
     c.initial_penalty                = next_penalty;
-    c.max_outer_iterations           = prm.max_outer_iterations;
-    c.trust_region.max_iterations    = prm.max_trust_region_iterations;
-    c.trust_region.max_cg_iterations = prm.max_cg_iterations;
-    c.rol_trust_region               = prm.rol_trust_region;
+    c.max_outer_iterations           = parameters.max_outer_iterations;
+    c.trust_region.max_iterations    = parameters.max_trust_region_iterations;
+    c.trust_region.max_cg_iterations = parameters.max_cg_iterations;
+    c.rol_trust_region               = parameters.rol_trust_region;
     return c;
   }
 
@@ -458,7 +458,7 @@ namespace PhaseField
     AugmentedLagrangianStep<dim> step(discretization,
                                       model.coefficients(tau),
                                       old_state.block(Field::U),
-                                      settings.augmented_lagrangian.scaled);
+                                      parameters.scaled);
     if (schur_solver)
       step.set_schur_solver(*schur_solver);
     BlockVector start        = step.make_point();
@@ -495,9 +495,8 @@ namespace PhaseField
             report.converged = al.converged;
             if (al.converged)
               next_penalty =
-                std::max(al.final_penalty /
-                           settings.augmented_lagrangian.penalty_reduction,
-                         settings.augmented_lagrangian.initial_penalty);
+                std::max(al.final_penalty / parameters.penalty_reduction,
+                         parameters.initial_penalty);
             else
               report_failure(al);
             break;
@@ -534,8 +533,8 @@ namespace PhaseField
   {
     report.newton_iterations += al.tr_iterations;
     report.linear_iterations += al.cg_iterations;
-    report.al_iterations += al.outer_iterations;
-    report.tr_iterations += al.tr_iterations;
+    report.add_count("al_iterations", al.outer_iterations);
+    report.add_count("tr_iterations", al.tr_iterations);
     if (report.initial_residual_norm == 0)
       report.initial_residual_norm =
         std::max(al.initial_gradient_norm, al.initial_constraint_norm);
@@ -581,8 +580,9 @@ namespace PhaseField
     // V and its adjoint P re-solved for the new mesh (as the nested scheme
     // does); the multiplier of the augmented Lagrangian is -2s times that P
     model.solve_inner_problem(state, tau, solver_type);
-    state.block(Field::P) *= -AugmentedLagrangianStep<dim>::objective_scale(
-      model.coefficients(tau), settings.augmented_lagrangian.scaled);
+    state.block(Field::P) *=
+      -AugmentedLagrangianStep<dim>::objective_scale(model.coefficients(tau),
+                                                     parameters.scaled);
   }
 
 
@@ -591,7 +591,7 @@ namespace PhaseField
   void
   AugmentedLagrangianScheme<dim>::reset_solver()
   {
-    next_penalty = settings.augmented_lagrangian.initial_penalty;
+    next_penalty = parameters.initial_penalty;
   }
 
 

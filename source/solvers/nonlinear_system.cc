@@ -23,8 +23,8 @@ namespace PhaseField
     StepReport sum = second;
     sum.newton_iterations += first.newton_iterations;
     sum.linear_iterations += first.linear_iterations;
-    sum.al_iterations += first.al_iterations;
-    sum.tr_iterations += first.tr_iterations;
+    for (const auto &[name, count] : first.counts)
+      sum.add_count(name, count);
     sum.initial_residual_norm = first.initial_residual_norm;
     return sum;
   }

@@ -11,12 +11,12 @@ namespace PhaseField
 
   namespace
   {
-    /** @p head followed by @p tail. */
-    template <typename T>
+    /** @p head followed by each of @p tails. */
+    template <typename T, typename... Tails>
     std::vector<T>
-    concatenate(std::vector<T> head, const std::vector<T> &tail)
+    concatenate(std::vector<T> head, const Tails &...tails)
     {
-      head.insert(head.end(), tail.begin(), tail.end());
+      (head.insert(head.end(), tails.begin(), tails.end()), ...);
       return head;
     }
 
@@ -109,10 +109,9 @@ namespace PhaseField
                                      "l2_error",
                                      "wall_seconds",
                                      "tau",
-                                     "residual_norm",
-                                     "al_iterations",
-                                     "tr_iterations",
-                                     "step_halvings"},
+                                     "residual_norm"},
+                                    scheme.statistics_columns(),
+                                    std::vector<std::string>{"step_halvings"},
                                     client.extra_columns());
   }
 
@@ -546,23 +545,23 @@ namespace PhaseField
                            "); nothing of this step was written. Try a "
                            "smaller <Time stepping / Tau>."));
     const std::vector<double> extras = client.extra_values(state, e);
-    statistics->add_row(concatenate<double>({double(step),
-                                             time,
-                                             double(report.newton_iterations),
-                                             double(report.linear_iterations),
-                                             cells,
-                                             dofs,
-                                             e.willmore,
-                                             e.area,
-                                             e.inside_measure,
-                                             error,
-                                             wall_timer.wall_time(),
-                                             tau,
-                                             report.final_residual_norm,
-                                             double(report.al_iterations),
-                                             double(report.tr_iterations),
-                                             double(halvings)},
-                                            extras));
+    statistics->add_row(
+      concatenate<double>({double(step),
+                           time,
+                           double(report.newton_iterations),
+                           double(report.linear_iterations),
+                           cells,
+                           dofs,
+                           e.willmore,
+                           e.area,
+                           e.inside_measure,
+                           error,
+                           wall_timer.wall_time(),
+                           tau,
+                           report.final_residual_norm},
+                          report.counts_of(scheme.statistics_columns()),
+                          std::vector<double>{double(halvings)},
+                          extras));
     pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
           << std::setprecision(5) << time << "  newton "
           << report.newton_iterations << " (linear " << report.linear_iterations

@@ -1,6 +1,7 @@
 #ifndef phasefield_parameters_h
 #define phasefield_parameters_h
 
+#include <any>
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <string>
@@ -150,67 +151,21 @@ namespace PhaseField
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
-  /** Time stepping scheme of willmore_flow. */
-  enum class Scheme
-  {
-    /** Nested variational time discretization (thesis chapter 3). */
-    nested,
-    /** Du-Liu-Wang semi-implicit scheme (thesis section 5.2). */
-    semi_implicit,
-    /**
-     * The nested step as a minimisation of an augmented Lagrangian in
-     * (U, V) with a trust-region inner solver (thesis chapter 7).
-     */
-    augmented_lagrangian
-  };
-
-  /** The name of @p scheme in `Time stepping / Scheme`. */
-  std::string
-  scheme_name(const Scheme scheme);
-
-  /** The scheme named @p name (one of the names of scheme_selection()). */
-  Scheme
-  parse_scheme(const std::string &name);
-
-  /** The pattern of `Time stepping / Scheme`: "nested|semi-implicit|...". */
-  std::string
-  scheme_selection();
-
   /**
-   * Subsection `Augmented Lagrangian` (thesis Algorithm 2.1, chapter 7):
-   * the tolerances of the outer loop, its start values and the limits of
-   * the trust-region inner solver.
+   * The value of `Time stepping / Scheme` and the parameters that the
+   * chosen scheme owns (its own subsection, e.g. `Augmented Lagrangian`).
+   * The scheme registry (schemes/scheme_registry.h) declares, parses and
+   * interprets both: core does not know the schemes.
    */
-  struct AugmentedLagrangianParameters
+  struct SchemeChoice
   {
-    /** w*: ||grad l_A||_L2 at which the outer loop may stop. */
-    double gradient_tolerance = 1e-8;
-    /** eta*: ||C||_L2 at which the outer loop may stop. */
-    double constraint_tolerance = 1e-8;
-    /** lambda0: the penalty of the first step (later steps: see scheme). */
-    double initial_penalty = 10;
+    /** A name of the scheme registry, e.g. "nested". */
+    std::string name;
     /**
-     * Each later step starts from max(lambda_final / this, lambda0)
-     * (thesis: 100^2).
+     * The scheme's own parameters as its registry entry parsed them
+     * (SchemeSettings::own_parameters() reads them); empty if it has none.
      */
-    double penalty_reduction = 1e4;
-    /** P0: the multiplier at every node at the start of the run. */
-    double initial_multiplier = 0.1;
-    /** true: the outer energy divided by epsilon (thesis (7.9)). */
-    bool scaled = true;
-    /** Limit of the outer (multiplier / penalty) iterations per step. */
-    unsigned int max_outer_iterations = 30;
-    /** Limit of the trust-region iterations per inner minimisation. */
-    unsigned int max_trust_region_iterations = 200;
-    /** Limit of the truncated-CG iterations per trust-region step. */
-    unsigned int max_cg_iterations = 2000;
-    /** The inner trust-region solver: ours (false) or Trilinos ROL's. */
-    bool rol_trust_region = false;
-
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
+    std::any parameters;
   };
 
   /**
@@ -219,7 +174,12 @@ namespace PhaseField
    */
   struct ModelParameters
   {
-    Scheme       scheme;
+    /**
+     * `Time stepping / Scheme` and the scheme's own parameters: set by
+     * parse_scheme_parameters() (schemes/scheme_registry.h), not by
+     * parse_parameters(), which does not know the schemes.
+     */
+    SchemeChoice scheme;
     std::string  epsilon_expression;
     std::string  tau_expression;
     std::string  inner_tau_expression;
@@ -384,7 +344,14 @@ namespace PhaseField
   /** Largest value of `Time stepping / Ramp-up steps`. */
   constexpr unsigned int max_ramp_steps = 30;
 
-  /** All parameters of willmore_flow. */
+  /**
+   * The parameters of willmore_flow that core owns. `Time stepping /
+   * Scheme` and the schemes' own subsections are declared and parsed by
+   * the scheme registry (declare_scheme_parameters() and
+   * parse_scheme_parameters() in schemes/scheme_registry.h), which a
+   * program calls besides declare_parameters() and parse_parameters()
+   * (WillmoreFlowParameters, EdgeRestorationParameters, ...).
+   */
   struct WillmoreParameters
   {
     /**
@@ -395,16 +362,15 @@ namespace PhaseField
     /** Memory estimate per cell of a run (matrices, vectors, mesh). */
     static constexpr double bytes_per_cell = 1024.;
 
-    unsigned int                  dimension;
-    std::string                   output_directory;
-    GeometryParameters            geometry;
-    MeshParameters                mesh;
-    ModelParameters               model;
-    NewtonParameters              newton;
-    LinearSolverParameters        linear_solver;
-    OutputParameters              output;
-    CheckpointParameters          checkpoint;
-    AugmentedLagrangianParameters augmented_lagrangian;
+    unsigned int           dimension;
+    std::string            output_directory;
+    GeometryParameters     geometry;
+    MeshParameters         mesh;
+    ModelParameters        model;
+    NewtonParameters       newton;
+    LinearSolverParameters linear_solver;
+    OutputParameters       output;
+    CheckpointParameters   checkpoint;
 
     /**
      * @p extra_shapes, @p extra_documentation: see GeometryParameters.

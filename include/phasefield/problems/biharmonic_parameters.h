@@ -59,11 +59,15 @@ namespace PhaseField
    */
   struct BiharmonicTimeParameters
   {
-    /** nested or augmented_lagrangian. */
-    Scheme      scheme = Scheme::nested;
-    std::string tau_expression;
-    std::string inner_tau_expression;
-    double      final_time;
+    /**
+     * `Scheme` (a scheme that takes a forcing without the double well:
+     * nested or augmented lagrangian) and its own parameters, set by
+     * BiharmonicParameters::parse_parameters().
+     */
+    SchemeChoice scheme;
+    std::string  tau_expression;
+    std::string  inner_tau_expression;
+    double       final_time;
 
     /** Step sizes of one level of the study. */
     struct StepSizes
@@ -94,12 +98,11 @@ namespace PhaseField
   /** All parameters of biharmonic_flow. */
   struct BiharmonicParameters
   {
-    unsigned int                  dimension;
-    std::string                   output_directory;
-    BiharmonicProblemParameters   problem;
-    ConvergenceParameters         convergence;
-    BiharmonicTimeParameters      time;
-    AugmentedLagrangianParameters augmented_lagrangian;
+    unsigned int                dimension;
+    std::string                 output_directory;
+    BiharmonicProblemParameters problem;
+    ConvergenceParameters       convergence;
+    BiharmonicTimeParameters    time;
     /**
      * How the nested scheme's reduced system is solved: direct (one MUMPS
      * factorisation per level) or iterative (CG with the product-form

@@ -8,6 +8,19 @@
 namespace PhaseField
 {
   /**
+   * All parameters of willmore_flow: those of WillmoreParameters and the
+   * choice of `Time stepping / Scheme` with the schemes' own subsections
+   * (declare_scheme_parameters(), parse_scheme_parameters()).
+   */
+  struct WillmoreFlowParameters : public WillmoreParameters
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
    * The problem of willmore_flow: Willmore flow (Willmore weight 1, no
    * area term) of the `Geometry` shape on a narrow-band mesh of [0,1]^dim
    * with the scheme of `Time stepping / Scheme`. What it adds to

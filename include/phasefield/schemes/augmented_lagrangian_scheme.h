@@ -5,6 +5,7 @@
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
+#include <phasefield/schemes/augmented_lagrangian_parameters.h>
 #include <phasefield/schemes/nested/nested_model.h>
 #include <phasefield/schemes/nested/nested_physics.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
@@ -289,9 +290,11 @@ namespace PhaseField
     void
     report_failure(const AugmentedLagrangianReport &al) const;
 
-    const SchemeSettings              settings;
-    const Discretization<dim>        &discretization;
-    const dealii::ConditionalOStream &pcout;
+    const SchemeSettings settings;
+    /** The subsection `Augmented Lagrangian`, which the scheme owns. */
+    const AugmentedLagrangianParameters parameters;
+    const Discretization<dim>          &discretization;
+    const dealii::ConditionalOStream   &pcout;
     /** Initialisation, energies and energy law of the same problem. */
     NestedModel<dim> model;
     /** The type of the linear solvers (`Linear solver / Type` resolved). */

@@ -1,6 +1,7 @@
 #ifndef phasefield_schemes_time_stepping_scheme_h
 #define phasefield_schemes_time_stepping_scheme_h
 
+#include <any>
 #include <deal.II/base/conditional_ostream.h>
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
@@ -20,8 +21,10 @@ namespace PhaseField
    * fields in the scalar Q1 space of a Discretization, the phase field U
    * first: (U, V, P) for the nested scheme, (U, F) for the semi-implicit
    * one. Implementations: NestedScheme (thesis chapter 3),
-   * SemiImplicitScheme (thesis section 5.2); create_time_stepping_scheme()
-   * is the only place that chooses between them.
+   * SemiImplicitScheme (thesis section 5.2), AugmentedLagrangianScheme
+   * (thesis chapter 7); the scheme registry (scheme_registry.h) names
+   * them, and its create_time_stepping_scheme() is the only place that
+   * chooses between them.
    */
   /**
    * How the start value of a step extrapolates the phase field U from the
@@ -200,6 +203,24 @@ namespace PhaseField
     curvature(const BlockVector &state, Vector &curvature) const = 0;
 
     /**
+     * The scheme's own columns of statistics.csv, written between
+     * residual_norm and step_halvings; in the row of a step, the value of
+     * each is the count of that name in the step's report
+     * (StepReport::add_count(), 0 where the step did not count it). The
+     * default, al_iterations and tr_iterations (the outer iterations of an
+     * augmented Lagrangian method and its trust-region iterations), are
+     * columns that statistics.csv has had for every scheme since the
+     * augmented Lagrangian scheme came, so that the files of the built-in
+     * schemes have the same columns. A scheme with counts of its own
+     * returns these followed by its own.
+     */
+    virtual std::vector<std::string>
+    statistics_columns() const
+    {
+      return {"al_iterations", "tr_iterations"};
+    }
+
+    /**
      * Does every exact step decrease energy_law_energy() by at least
      * dissipation() (thesis Cor. 3.3)? The time loop checks it then.
      */
@@ -233,7 +254,11 @@ namespace PhaseField
   /** What create_time_stepping_scheme() builds a scheme from. */
   struct SchemeSettings
   {
-    Scheme scheme = Scheme::nested;
+    /**
+     * The scheme, a name of the scheme registry, and its own parameters
+     * (read by own_parameters()).
+     */
+    SchemeChoice scheme;
     /** Epsilon (1 for the biharmonic model). */
     double epsilon   = 1;
     double inner_tau = 1;
@@ -242,22 +267,28 @@ namespace PhaseField
     OuterEnergy            outer_energy;
     NewtonParameters       newton;
     LinearSolverParameters linear_solver;
-    /** Only for Scheme::augmented_lagrangian. */
-    AugmentedLagrangianParameters augmented_lagrangian;
-    bool                          verbose = false;
-  };
+    bool                   verbose = false;
 
-  /**
-   * The scheme @p settings.scheme on @p discretization, which must outlive
-   * it. Throws InputError for combinations the schemes do not offer
-   * (restoration terms or the biharmonic model with the semi-implicit
-   * scheme).
-   */
-  template <int dim>
-  std::unique_ptr<TimeSteppingScheme<dim>>
-  create_time_stepping_scheme(const SchemeSettings             &settings,
-                              const Discretization<dim>        &discretization,
-                              const dealii::ConditionalOStream &pcout);
+    /**
+     * The scheme's own parameters, of the type @p Parameters that its
+     * registry entry parsed (SchemeEntry::set_parameters()); the defaults
+     * of @p Parameters if none were parsed (settings made in code).
+     */
+    template <typename Parameters>
+    Parameters
+    own_parameters() const
+    {
+      if (!scheme.parameters.has_value())
+        return Parameters();
+      const Parameters *parameters =
+        std::any_cast<Parameters>(&scheme.parameters);
+      AssertThrow(parameters != nullptr,
+                  dealii::ExcMessage("The parameters of the scheme <" +
+                                     scheme.name +
+                                     "> are not of the type it reads."));
+      return *parameters;
+    }
+  };
 } // namespace PhaseField
 
 #endif

@@ -7,6 +7,9 @@
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/solvers/linear_solver.h>
+#include <string>
+#include <utility>
+#include <vector>
 
 /**
  * What the nonlinear solvers see of a problem: interfaces, no physics. A
@@ -20,20 +23,56 @@ namespace PhaseField
   /** What one solve of a nonlinear system did. */
   struct StepReport
   {
-    bool         converged         = false;
-    unsigned int newton_iterations = 0;
-    unsigned int linear_iterations = 0;
-    /** Outer iterations of the augmented Lagrangian scheme (else 0). */
-    unsigned int al_iterations = 0;
-    /** Trust-region iterations of the augmented Lagrangian scheme. */
-    unsigned int tr_iterations         = 0;
+    bool         converged             = false;
+    unsigned int newton_iterations     = 0;
+    unsigned int linear_iterations     = 0;
     double       initial_residual_norm = 0;
     double       final_residual_norm   = 0;
+    /**
+     * Counts of a solver's own, each with its name (a time-stepping scheme
+     * writes them into the statistics.csv columns of these names, e.g.
+     * al_iterations); combine() sums them by name.
+     */
+    std::vector<std::pair<std::string, double>> counts;
+
+    /** Add @p value to the count @p name (a new count if there is none). */
+    void
+    add_count(const std::string &name, const double value)
+    {
+      for (auto &[count_name, count] : counts)
+        if (count_name == name)
+          {
+            count += value;
+            return;
+          }
+      counts.emplace_back(name, value);
+    }
+
+    /** The count @p name, 0 if this report has none. */
+    double
+    count(const std::string &name) const
+    {
+      for (const auto &[count_name, count] : counts)
+        if (count_name == name)
+          return count;
+      return 0;
+    }
+
+    /** The counts @p names, in their order (0 for each it has not). */
+    std::vector<double>
+    counts_of(const std::vector<std::string> &names) const
+    {
+      std::vector<double> values;
+      for (const std::string &name : names)
+        values.push_back(count(name));
+      return values;
+    }
   };
 
   /**
    * The report of two solves one after the other: the iteration counts
-   * summed, the initial residual of @p first, the rest of @p second.
+   * and the named counts summed, the initial residual of @p first, the
+   * rest of @p second.
    */
   StepReport
   combine(const StepReport &first, const StepReport &second);

@@ -1,0 +1,335 @@
+#include <array>
+#include <phasefield/schemes/augmented_lagrangian_parameters.h>
+#include <phasefield/schemes/augmented_lagrangian_scheme.h>
+#include <phasefield/schemes/nested_scheme.h>
+#include <phasefield/schemes/scheme_registry.h>
+#include <phasefield/schemes/semi_implicit_scheme.h>
+#include <utility>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // ---------------------------------------------------------------------
+    // The built-in schemes: one entry each, listed in built_in_schemes().
+    // ---------------------------------------------------------------------
+
+    SchemeEntry
+    nested_entry()
+    {
+      SchemeEntry entry;
+      entry.name = "nested";
+      entry.description =
+        "the nested variational time discretization (thesis chapter 3), "
+        "Newton on the (U,V,P) saddle-point system.";
+      entry.terms = ModelTerms::all();
+      entry.set_factory<NestedScheme>();
+      return entry;
+    }
+
+
+
+    SchemeEntry
+    semi_implicit_entry()
+    {
+      SchemeEntry entry;
+      entry.name = "semi-implicit";
+      entry.description =
+        "the Du-Liu-Wang scheme (thesis section 5.2), Newton on (U,F) with "
+        "F = eps Lap U + (2/eps) U(1-U^2); it does not use Inner tau.";
+      entry.set_factory<SemiImplicitScheme>();
+      return entry;
+    }
+
+
+
+    SchemeEntry
+    augmented_lagrangian_entry()
+    {
+      SchemeEntry entry;
+      entry.name = "augmented lagrangian";
+      entry.description =
+        "the nested step as the minimisation of an augmented Lagrangian in "
+        "(U,V) by a trust-region method (thesis chapter 7; subsection "
+        "Augmented Lagrangian).";
+      entry.terms               = ModelTerms::all();
+      entry.terms.mismatch_term = false;
+      entry.set_factory<AugmentedLagrangianScheme>();
+      entry.set_parameters<AugmentedLagrangianParameters>();
+      return entry;
+    }
+
+
+
+    /** The built-in schemes, the default (`nested`) first. */
+    std::vector<SchemeEntry>
+    built_in_schemes()
+    {
+      return {nested_entry(),
+              semi_implicit_entry(),
+              augmented_lagrangian_entry()};
+    }
+
+
+
+    // ---------------------------------------------------------------------
+    // The registry
+    // ---------------------------------------------------------------------
+
+    /** The registered schemes, built-in ones first. */
+    std::vector<SchemeEntry> &
+    registry()
+    {
+      static std::vector<SchemeEntry> entries = built_in_schemes();
+      return entries;
+    }
+
+
+
+    /** The members of ModelTerms with their names, in messages and docs. */
+    const std::array<std::pair<bool ModelTerms::*, const char *>, 6>
+      term_names = {{{&ModelTerms::area_term, "area term"},
+                     {&ModelTerms::fixed_values, "fixed values"},
+                     {&ModelTerms::forcing, "forcing"},
+                     {&ModelTerms::biharmonic_model, "biharmonic model"},
+                     {&ModelTerms::willmore_weight, "Willmore weight"},
+                     {&ModelTerms::mismatch_term, "mismatch term"}}};
+
+
+
+    /** "a", "a and b", "a, b and c" with @p last_separator for "and". */
+    std::string
+    join(const std::vector<std::string> &words,
+         const std::string              &separator,
+         const std::string              &last_separator)
+    {
+      std::string text;
+      for (unsigned int i = 0; i < words.size(); ++i)
+        text += (i == 0                ? "" :
+                 i + 1 == words.size() ? last_separator :
+                                         separator) +
+                words[i];
+      return text;
+    }
+
+
+
+    /** The names of the schemes that take every term of @p needed. */
+    std::vector<std::string>
+    schemes_taking(const ModelTerms &needed)
+    {
+      std::vector<std::string> names;
+      for (const SchemeEntry &entry : registered_schemes())
+        if (needed.missing_in(entry.terms).empty())
+          names.push_back(entry.name);
+      return names;
+    }
+
+
+
+    /** The documentation of `Time stepping / Scheme`. */
+    std::string
+    scheme_documentation()
+    {
+      std::string text =
+        "The time discretization; in brackets the terms beyond Willmore "
+        "flow that a scheme takes (a program that needs another one "
+        "rejects it).";
+      for (const SchemeEntry &entry : registered_schemes())
+        {
+          std::vector<std::string> taken;
+          for (const auto &[member, name] : term_names)
+            if (entry.terms.*member)
+              taken.emplace_back(name);
+          text += " " + entry.name + ": " + entry.description + " [" +
+                  (taken.empty() ? "none" : join(taken, ", ", ", ")) + "]";
+        }
+      return text;
+    }
+
+
+
+    /** The factory of @p entry in dimension @p dim. */
+    template <int dim>
+    const SchemeFactory<dim> &
+    factory(const SchemeEntry &entry);
+
+    template <>
+    const SchemeFactory<2> &
+    factory<2>(const SchemeEntry &entry)
+    {
+      return entry.create_2d;
+    }
+
+    template <>
+    const SchemeFactory<3> &
+    factory<3>(const SchemeEntry &entry)
+    {
+      return entry.create_3d;
+    }
+  } // namespace
+
+
+
+  ModelTerms
+  ModelTerms::all()
+  {
+    ModelTerms terms;
+    for (const auto &term : term_names)
+      terms.*(term.first) = true;
+    return terms;
+  }
+
+
+
+  ModelTerms
+  ModelTerms::needed_by(const SchemeSettings &settings)
+  {
+    ModelTerms terms;
+    terms.area_term        = settings.outer_energy.area_weight != 0;
+    terms.fixed_values     = settings.outer_energy.fixed_u != nullptr;
+    terms.forcing          = settings.outer_energy.forcing != nullptr;
+    terms.biharmonic_model = !settings.double_well;
+    terms.willmore_weight  = settings.outer_energy.willmore_weight != 1;
+    return terms;
+  }
+
+
+
+  std::vector<std::string>
+  ModelTerms::missing_in(const ModelTerms &offered) const
+  {
+    std::vector<std::string> missing;
+    for (const auto &[member, name] : term_names)
+      if (this->*member && !(offered.*member))
+        missing.emplace_back(name);
+    return missing;
+  }
+
+
+
+  void
+  register_scheme(const SchemeEntry &entry)
+  {
+    for (const SchemeEntry &existing : registry())
+      AssertThrow(existing.name != entry.name,
+                  ExcMessage("The scheme <" + entry.name +
+                             "> is registered already."));
+    AssertThrow(!entry.name.empty() && entry.create_2d && entry.create_3d,
+                ExcMessage("A scheme entry needs a name and factories."));
+    registry().push_back(entry);
+  }
+
+
+
+  const std::vector<SchemeEntry> &
+  registered_schemes()
+  {
+    return registry();
+  }
+
+
+
+  const SchemeEntry &
+  scheme_entry(const std::string &name)
+  {
+    std::vector<std::string> names;
+    for (const SchemeEntry &entry : registered_schemes())
+      {
+        if (entry.name == name)
+          return entry;
+        names.push_back(entry.name);
+      }
+    throw InputError("Unknown <Time stepping / Scheme> = <" + name +
+                     ">; use one of " + join(names, "|", "|") + ".");
+  }
+
+
+
+  void
+  declare_scheme_parameters(ParameterHandler &prm)
+  {
+    std::vector<std::string> names;
+    for (const SchemeEntry &entry : registered_schemes())
+      names.push_back(entry.name);
+    prm.enter_subsection("Time stepping");
+    prm.declare_entry("Scheme",
+                      names.front(),
+                      Patterns::Selection(join(names, "|", "|")),
+                      scheme_documentation());
+    prm.leave_subsection();
+    for (const SchemeEntry &entry : registered_schemes())
+      if (entry.declare_parameters)
+        entry.declare_parameters(prm);
+  }
+
+
+
+  SchemeChoice
+  parse_scheme_parameters(ParameterHandler  &prm,
+                          const ModelTerms  &needed,
+                          const std::string &program)
+  {
+    SchemeChoice choice;
+    prm.enter_subsection("Time stepping");
+    choice.name = prm.get("Scheme");
+    prm.leave_subsection();
+    check_scheme_terms(choice.name, needed, program);
+    const SchemeEntry &entry = scheme_entry(choice.name);
+    if (entry.parse_parameters)
+      choice.parameters = entry.parse_parameters(prm);
+    return choice;
+  }
+
+
+
+  void
+  check_scheme_terms(const std::string &name,
+                     const ModelTerms  &needed,
+                     const std::string &program)
+  {
+    const std::vector<std::string> missing =
+      needed.missing_in(scheme_entry(name).terms);
+    if (missing.empty())
+      return;
+    const std::vector<std::string> alternatives = schemes_taking(needed);
+    throw InputError(
+      "<Time stepping / Scheme> = " + name + " has no " +
+      join(missing, ", no ", " and no ") +
+      (program.empty() ? "" : ", which " + program + " needs") + ": " +
+      (alternatives.empty() ? "no scheme has all of these." :
+                              "use <Time stepping / Scheme> = " +
+                                join(alternatives, ", ", " or ") + "."));
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<TimeSteppingScheme<dim>>
+  create_time_stepping_scheme(const SchemeSettings             &settings,
+                              const Discretization<dim>        &discretization,
+                              const dealii::ConditionalOStream &pcout)
+  {
+    check_scheme_terms(settings.scheme.name, ModelTerms::needed_by(settings));
+    const SchemeEntry &entry = scheme_entry(settings.scheme.name);
+    std::unique_ptr<TimeSteppingScheme<dim>> scheme =
+      factory<dim>(entry)(settings, discretization, pcout);
+    AssertThrow(scheme->name() == entry.name,
+                ExcMessage("The scheme registered as <" + entry.name +
+                           "> calls itself <" + scheme->name() + ">."));
+    return scheme;
+  }
+
+
+
+  template std::unique_ptr<TimeSteppingScheme<2>>
+  create_time_stepping_scheme(const SchemeSettings &,
+                              const Discretization<2> &,
+                              const dealii::ConditionalOStream &);
+  template std::unique_ptr<TimeSteppingScheme<3>>
+  create_time_stepping_scheme(const SchemeSettings &,
+                              const Discretization<3> &,
+                              const dealii::ConditionalOStream &);
+} // namespace PhaseField
