@@ -6,6 +6,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <fcntl.h>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <phasefield/core/file_io.h>
@@ -170,6 +171,15 @@ namespace PhaseField
     std::ofstream out(filename, std::ios::binary);
     if (!out)
       throw WriteError(write_failure_message(filename, errno));
+    // a partly written regular file is removed: no truncated output
+    const auto fail = [&](const int error) {
+      out.close();
+      std::error_code ignored;
+      if (std::filesystem::is_regular_file(
+            std::filesystem::symlink_status(filename, ignored)))
+        std::filesystem::remove(filename, ignored);
+      throw WriteError(write_failure_message(filename, error));
+    };
     try
       {
         writer(out);
@@ -177,15 +187,14 @@ namespace PhaseField
     catch (...)
       {
         // deal.II's writers check the stream themselves (ExcIO)
-        throw WriteError(write_failure_message(filename, errno));
+        fail(errno);
       }
     out.flush();
-    const int error = errno;
     if (!out)
-      throw WriteError(write_failure_message(filename, error));
+      fail(errno);
     out.close();
     if (out.fail())
-      throw WriteError(write_failure_message(filename, errno));
+      fail(errno);
   }
 
 

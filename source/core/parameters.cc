@@ -584,6 +584,18 @@ namespace PhaseField
     check_positive(inner_tau,
                    "Time stepping / Inner tau",
                    inner_tau_expression);
+    // V - U is of the size inner tau / h^2: below this bound it is within
+    // 10^4 of the round-off of U, and the curvature (U - V) / inner tau
+    // is noise (or not finite: 1e-300 overflowed the inner problem)
+    constexpr double smallest_inner_tau_per_h2 = 1e-12;
+    if (inner_tau < smallest_inner_tau_per_h2 * h * h)
+      throw InputError("The parameter <Time stepping / Inner tau> = <" +
+                       inner_tau_expression + "> evaluates to " +
+                       std::to_string(inner_tau) + " (" +
+                       std::to_string(inner_tau / (h * h)) +
+                       " h^2), but must be at least 1e-12 h^2: V - U is of the "
+                       "size inner tau / h^2 and would drown in round-off, "
+                       "and the residuals of the steps would not be finite.");
   }
 
 

@@ -34,8 +34,8 @@ namespace PhaseField
   /**
    * Write @p filename by @p writer and check that every byte reached the
    * file (the stream is flushed and closed, and its state checked
-   * after each); throws WriteError naming the file otherwise. Not
-   * collective.
+   * after each); throws WriteError naming the file otherwise, after
+   * removing a partly written regular file. Not collective.
    */
   void
   write_checked(const std::string                         &filename,
