@@ -156,8 +156,11 @@ namespace PhaseField
            "directory=out\".\n"
            "Exit status: 0 on success, 2 for invalid input (parameter "
            "file, --set,\n"
-           "command line, input files), 1 for any other error (e.g. "
-           "Newton's method failed).\n\n"
+           "command line, input files, a checkpoint that fails "
+           "verification, an output\n"
+           "directory in use by another run), 1 for any other error "
+           "(e.g. Newton's method\n"
+           "failed, a failed write, a stop by SIGTERM or SIGINT).\n\n"
         << "Parameters (with defaults and documentation):\n\n";
       prm.print_parameters(std::cout, ParameterHandler::PRM);
     }

@@ -7,7 +7,10 @@
 # step 3 from copies of its output directory with one thing wrong each; each
 # must exit with status 2 and a message naming the file or the parameter:
 # a truncated, a changed (same size), an empty and a missing mesh file, a
-# checkpoint.txt without its header, another Finest level, Epsilon or
+# checkpoint.txt without its header, a state.txt with a time later than
+# the steps reach, a negative step size or a step before its step offset
+# (with checksums that match; the empty, missing and checkpoint.txt cases
+# and these on 1 rank only), another Finest level, Epsilon or
 # Dimension, a statistics.csv without the checkpoint's row and one with a
 # damaged row, and Number of steps = the checkpoint's step. Then an
 # allowed change (<Checkpoint / Allow parameter change>) resumes with a
@@ -48,18 +51,58 @@ resume changed
 expect "changed mesh_fixed.data" 2 \
   "<$work/changed/$checkpoint/mesh_fixed.data> does not have the checksum"
 
-copy empty; : > "$work/empty/$checkpoint/mesh"
-resume empty
-expect "empty mesh file" 2 "<$work/empty/$checkpoint/mesh> has 0 bytes"
+# edit <name> <line> <replacement>: replace the line starting with <line>
+# of state.txt in the copy <name> and record its new size and checksum
+# in checkpoint.txt (64-bit FNV-1a), as a consistent but wrong checkpoint
+edit() {
+  copy "$1"
+  /usr/bin/python3 - "$work/$1/$checkpoint" "$2" "$3" <<'PY'
+import os, sys
+directory, key, replacement = sys.argv[1:]
+state = os.path.join(directory, "state.txt")
+lines = open(state).read().split("\n")
+lines = [replacement if l.startswith(key + " ") else l for l in lines]
+data = "\n".join(lines).encode()
+open(state, "wb").write(data)
+h = 14695981039346656037
+for b in data:
+    h = ((h ^ b) * 1099511628211) % 2**64
+meta = os.path.join(directory, "checkpoint.txt")
+out = [f"file state.txt {len(data)} {h:016x}" if l.startswith("file state.txt ")
+       else l for l in open(meta).read().split("\n")]
+open(meta, "w").write("\n".join(out))
+PY
+}
 
-copy missing; rm "$work/missing/$checkpoint/mesh.info"
-resume missing
-expect "missing mesh.info" 2 "<$work/missing/$checkpoint/mesh.info> is missing"
+# the other damaged files are checked by the same code on rank 0: on 2
+# ranks the truncated file above shows that every rank stops
+if [ "$ranks" -eq 1 ]; then
+  copy empty; : > "$work/empty/$checkpoint/mesh"
+  resume empty
+  expect "empty mesh file" 2 "<$work/empty/$checkpoint/mesh> has 0 bytes"
 
-copy metadata; echo "something else" > "$work/metadata/$checkpoint/checkpoint.txt"
-resume metadata
-expect "damaged checkpoint.txt" 2 \
-  "<$work/metadata/$checkpoint/checkpoint.txt> is missing or damaged"
+  copy missing; rm "$work/missing/$checkpoint/mesh.info"
+  resume missing
+  expect "missing mesh.info" 2 "<$work/missing/$checkpoint/mesh.info> is missing"
+
+  copy metadata; echo "something else" > "$work/metadata/$checkpoint/checkpoint.txt"
+  resume metadata
+  expect "damaged checkpoint.txt" 2 \
+    "<$work/metadata/$checkpoint/checkpoint.txt> is missing or damaged"
+
+  edit late time "time 1e10"
+  resume late
+  expect "state.txt: a time later than the steps reach" 2 \
+    "checkpoint <$work/late/$checkpoint> is after step 2 at time 10000000000.*later than"
+  edit negative state_tau "state_tau -0.001"
+  resume negative
+  expect "state.txt: a negative step size" 2 \
+    "checkpoint file <$work/negative/$checkpoint/state.txt> is damaged: the step size -0.001000 is not a positive number"
+  edit offset step_offset "step_offset 5"
+  resume offset
+  expect "state.txt: a step before the step offset" 2 \
+    "state.txt> is damaged: step 2 is before the step offset 5"
+fi
 
 copy level; resume level --set "Mesh/Finest level=6"
 expect "another Finest level" 2 \
