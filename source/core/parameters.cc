@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
@@ -175,6 +177,18 @@ namespace PhaseField
     sizes      = parse_double_list(prm.get("Sizes"), subsection + " / Sizes");
     expression = prm.get("Expression");
     prm.leave_subsection();
+    const auto check_finite = [&](const std::vector<double> &values,
+                                  const std::string         &name) {
+      for (const double value : values)
+        if (!std::isfinite(value))
+          throw InputError("The parameter <" + subsection + " / " + name +
+                           "> contains " + std::to_string(value) +
+                           ", but must contain finite numbers only.");
+    };
+    check_finite(center, "Center");
+    check_finite(second_center, "Second center");
+    check_finite({radius}, "Radius");
+    check_finite(sizes, "Sizes");
     for (const double s : sizes)
       if (!(s > 0))
         throw InputError("All entries of <" + subsection +
@@ -407,6 +421,18 @@ namespace PhaseField
     check_positive(inner_tau,
                    "Time stepping / Inner tau",
                    inner_tau_expression);
+    // V - U is of the size inner tau / h^2: below this bound it is within
+    // 10^4 of the round-off of U, and the curvature (U - V) / inner tau
+    // is noise (or not finite: 1e-300 overflowed the inner problem)
+    constexpr double smallest_inner_tau_per_h2 = 1e-12;
+    if (inner_tau < smallest_inner_tau_per_h2 * h * h)
+      throw InputError("The parameter <Time stepping / Inner tau> = <" +
+                       inner_tau_expression + "> evaluates to " +
+                       std::to_string(inner_tau) + " (" +
+                       std::to_string(inner_tau / (h * h)) +
+                       " h^2), but must be at least 1e-12 h^2: V - U is of the "
+                       "size inner tau / h^2 and would drown in round-off, "
+                       "and the residuals of the steps would not be finite.");
   }
 
 
@@ -605,7 +631,19 @@ namespace PhaseField
       "statistics.csv and solution.pvd. The other parameters must be those "
       "of the run that wrote the checkpoint (Number of steps may be "
       "larger). false: start from the initial shape; checkpoints of an "
-      "earlier run in the output directory are deleted.");
+      "earlier run in the output directory are deleted. A resume verifies "
+      "the checksums of the checkpoint's files and compares the "
+      "parameters recorded in it (program, Dimension, levels, Epsilon, "
+      "scheme, ...) with this run's: a damaged checkpoint or another "
+      "value is refused (exit status 2).");
+    prm.declare_entry(
+      "Allow parameter change",
+      "",
+      Patterns::Anything(),
+      "Comma separated names (Subsection / Name, as in the message of a "
+      "refused resume, e.g. Mesh / Finest level) of parameters recorded in "
+      "the checkpoint that may have another value on resume; each "
+      "difference is then printed as a warning. Empty: none.");
     prm.leave_subsection();
   }
 
@@ -617,6 +655,17 @@ namespace PhaseField
     prm.enter_subsection("Checkpoint");
     interval = prm.get_integer("Interval");
     resume   = prm.get_bool("Resume");
+    allowed_changes.clear();
+    for (const std::string &name :
+         Utilities::split_string_list(prm.get("Allow parameter change"), ','))
+      {
+        // "Mesh/Finest level" and "Mesh / Finest level" name the same one
+        std::string normalized;
+        for (const std::string &part : Utilities::split_string_list(name, '/'))
+          normalized += (normalized.empty() ? "" : " / ") + part;
+        if (!normalized.empty())
+          allowed_changes.push_back(normalized);
+      }
     prm.leave_subsection();
   }
 
@@ -734,6 +783,49 @@ namespace PhaseField
 
 
 
+  namespace
+  {
+    /**
+     * Throw an InputError if the parameter file @p filename, included
+     * through the chain @p chain (the files that include it, outermost
+     * first), includes itself directly or through other files (deal.II's
+     * `include` would recurse until the stack overflows). Files that do
+     * not exist are left to ParameterHandler's message.
+     */
+    void
+    check_include_cycles(const std::string        &filename,
+                         std::vector<std::string> &chain)
+    {
+      namespace fs = std::filesystem;
+      std::error_code   error;
+      const std::string canonical = fs::weakly_canonical(filename, error);
+      const auto found = std::find(chain.begin(), chain.end(), canonical);
+      if (found != chain.end())
+        {
+          std::string cycle;
+          for (auto file = found; file != chain.end(); ++file)
+            cycle += "<" + *file + "> includes ";
+          throw InputError("The parameter files include each other in a "
+                           "cycle: " +
+                           cycle + "<" + canonical + ">.");
+        }
+      std::ifstream file(filename);
+      if (!file)
+        return;
+      chain.push_back(canonical);
+      for (std::string line; std::getline(file, line);)
+        {
+          line = Utilities::trim(line.substr(0, line.find('#')));
+          if (line.size() > 7 && line.compare(0, 7, "include") == 0 &&
+              std::isspace(static_cast<unsigned char>(line[7])))
+            check_include_cycles(Utilities::trim(line.substr(7)), chain);
+        }
+      chain.pop_back();
+    }
+  } // namespace
+
+
+
   void
   read_parameter_file(ParameterHandler &prm, const std::string &filename)
   {
@@ -744,6 +836,8 @@ namespace PhaseField
     std::ifstream file(filename);
     if (!file)
       throw InputError("Cannot open the parameter file <" + filename + ">.");
+    std::vector<std::string> chain;
+    check_include_cycles(filename, chain);
     try
       {
         prm.parse_input(file, filename);

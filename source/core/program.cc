@@ -1,8 +1,10 @@
 #include <deal.II/base/mpi.h>
 #include <iostream>
 #include <phasefield/core/blas_kernels.h>
+#include <phasefield/core/file_io.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/program.h>
+#include <phasefield/core/stop_request.h>
 #include <sstream>
 
 namespace PhaseField
@@ -17,6 +19,18 @@ namespace PhaseField
     constexpr int exit_error = 1;
     /** Exit status of a run stopped by an InputError. */
     constexpr int exit_input_error = 2;
+
+    /**
+     * Removes the output directories' lock files (release_output_locks())
+     * when it goes out of scope: at every return of run_program().
+     */
+    struct OutputLockRelease
+    {
+      ~OutputLockRelease()
+      {
+        release_output_locks();
+      }
+    };
 
     /** What the command line asks for. */
     struct CommandLine
@@ -142,8 +156,11 @@ namespace PhaseField
            "directory=out\".\n"
            "Exit status: 0 on success, 2 for invalid input (parameter "
            "file, --set,\n"
-           "command line, input files), 1 for any other error (e.g. "
-           "Newton's method failed).\n\n"
+           "command line, input files, a checkpoint that fails "
+           "verification, an output\n"
+           "directory in use by another run), 1 for any other error "
+           "(e.g. Newton's method\n"
+           "failed, a failed write, a stop by SIGTERM or SIGINT).\n\n"
         << "Parameters (with defaults and documentation):\n\n";
       prm.print_parameters(std::cout, ParameterHandler::PRM);
     }
@@ -184,6 +201,8 @@ namespace PhaseField
               const std::function<void(ParameterHandler &)> &run)
   {
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    const OutputLockRelease          release_locks_at_return;
+    install_stop_handlers();
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     const std::string blas_message = select_blas_kernels();
     if (root && !blas_message.empty())

@@ -1,5 +1,6 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
+#include <cerrno>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -8,13 +9,47 @@
 #ifdef __GLIBC__
 #  include <malloc.h>
 #endif
+#include <phasefield/core/file_io.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
+#include <sstream>
 
 namespace PhaseField
 {
   namespace
   {
+    /**
+     * The step (first entry) of the row @p line, line @p line_number of
+     * @p filename; throws InputError naming both if it is not a
+     * non-negative integer.
+     */
+    double
+    step_of_row(const std::string &line,
+                const std::string &filename,
+                const unsigned int line_number)
+    {
+      const std::string entry    = line.substr(0, line.find(','));
+      std::size_t       consumed = 0;
+      double            step     = -1;
+      try
+        {
+          step = std::stod(entry, &consumed);
+        }
+      catch (...)
+        {
+          consumed = 0;
+        }
+      if (entry.empty() || consumed != entry.size() || !(step >= 0) ||
+          step != std::floor(step) || line.find(',') == std::string::npos)
+        throw InputError("Cannot continue <" + filename + ">: line " +
+                         std::to_string(line_number) + " <" +
+                         line.substr(0, 80) +
+                         "> is not a row of statistics (damaged file?).");
+      return step;
+    }
+
+
+
     /**
      * The lines of the CSV file @p filename after its header @p header up
      * to the first one whose first entry (the step) is @p last_kept_step:
@@ -30,25 +65,30 @@ namespace PhaseField
       std::ifstream in(filename);
       std::string   line;
       if (!in || !std::getline(in, line))
-        throw std::runtime_error("Cannot continue <" + filename +
-                                 ">: the file is missing or empty.");
+        throw InputError("Cannot continue <" + filename +
+                         ">: the file is missing or empty.");
       if (line != header)
-        throw std::runtime_error(
-          "Cannot continue <" + filename + ">: its columns <" + line +
-          "> are not those of this run <" + header + ">.");
+        throw InputError("Cannot continue <" + filename + ">: its columns <" +
+                         line + "> are not those of this run <" + header +
+                         ">.");
       std::vector<std::string> rows;
-      while (std::getline(in, line))
+      for (unsigned int line_number = 2; std::getline(in, line); ++line_number)
         {
           if (line.empty())
             continue;
-          const double step = std::stod(line.substr(0, line.find(',')));
+          const double step = step_of_row(line, filename, line_number);
           if (step > last_kept_step)
             break;
           rows.push_back(line);
           if (step == last_kept_step)
-            break;
+            return rows;
         }
-      return rows;
+      throw InputError(
+        "Cannot continue <" + filename + ">: it has no row of step " +
+        std::to_string(last_kept_step) +
+        ", the step of the checkpoint (the file is shorter than the "
+        "checkpoint: was it replaced or truncated?). Resume from the output "
+        "directory of the run that wrote the checkpoint.");
     }
   } // namespace
 
@@ -69,14 +109,18 @@ namespace PhaseField
                                  const std::vector<std::string> &columns,
                                  const MPI_Comm mpi_communicator)
     : n_columns(columns.size())
-    , is_root(dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , mpi_communicator(mpi_communicator)
+    , filename(filename)
   {
     run_on_root(mpi_communicator, [&]() {
       file.open(filename);
       if (!file)
         throw InputError("Cannot write <" + filename +
                          ">: check <Output directory>.");
+      errno = 0;
       file << header(columns) << std::endl;
+      if (!file)
+        throw WriteError(write_failure_message(filename, errno));
     });
   }
 
@@ -87,21 +131,19 @@ namespace PhaseField
                                  const MPI_Comm     mpi_communicator,
                                  const unsigned int last_kept_step)
     : n_columns(columns.size())
-    , is_root(dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , mpi_communicator(mpi_communicator)
+    , filename(filename)
   {
     run_on_root(mpi_communicator, [&]() {
       const std::vector<std::string> rows =
         rows_up_to_step(filename, header(columns), last_kept_step);
       // rewrite under a temporary name: a kill leaves the old file intact
       const std::string temporary = filename + ".tmp";
-      {
-        std::ofstream out(temporary);
+      write_checked(temporary, [&](std::ostream &out) {
         out << header(columns) << '\n';
         for (const std::string &row : rows)
           out << row << '\n';
-        if (!out.flush())
-          throw std::runtime_error("Cannot write <" + temporary + ">.");
-      }
+      });
       std::filesystem::rename(temporary, filename);
       file.open(filename, std::ios::app);
       if (!file)
@@ -115,19 +157,33 @@ namespace PhaseField
   StatisticsFile::add_row(const std::vector<double> &values)
   {
     AssertDimension(values.size(), n_columns);
-    if (!is_root)
-      return;
-    file << std::setprecision(10);
-    for (std::size_t i = 0; i < values.size(); ++i)
-      {
-        if (i)
-          file << ',';
-        if (std::isnan(values[i]))
-          file << "nan";
-        else
-          file << values[i];
-      }
-    file << std::endl;
+    // collective: a failed write stops every rank
+    run_on_root(mpi_communicator, [&]() {
+      std::ostringstream row;
+      row << std::setprecision(10);
+      for (std::size_t i = 0; i < values.size(); ++i)
+        {
+          if (i)
+            row << ',';
+          if (std::isnan(values[i]))
+            row << "nan";
+          else
+            row << values[i];
+        }
+      const std::streamoff complete = file.tellp();
+      errno                         = 0;
+      file << row.str() << std::endl;
+      if (!file)
+        {
+          const int error = errno;
+          // no partial row: a resume can continue the file
+          file.close();
+          std::error_code ignored;
+          if (complete > 0)
+            std::filesystem::resize_file(filename, complete, ignored);
+          throw WriteError(write_failure_message(filename, error));
+        }
+    });
   }
 
 
@@ -136,32 +192,10 @@ namespace PhaseField
   run_on_root(const MPI_Comm               mpi_communicator,
               const std::function<void()> &function)
   {
-    // what happened on rank 0: 0 success, 1 InputError, 2 another error
-    enum Outcome : int
-    {
-      success,
-      input_error,
-      other_error
-    };
-    std::pair<int, std::string> outcome(success, "");
-    if (dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      try
-        {
-          function();
-        }
-      catch (const InputError &error)
-        {
-          outcome = {input_error, error.what()};
-        }
-      catch (const std::exception &error)
-        {
-          outcome = {other_error, error.what()};
-        }
-    outcome = dealii::Utilities::MPI::broadcast(mpi_communicator, outcome, 0);
-    if (outcome.first == input_error)
-      throw InputError(outcome.second);
-    if (outcome.first == other_error)
-      throw std::runtime_error(outcome.second);
+    run_on_every_rank(mpi_communicator, [&]() {
+      if (dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        function();
+    });
   }
 
 
@@ -181,6 +215,7 @@ namespace PhaseField
     if (!dealii::Utilities::MPI::broadcast(mpi_communicator, created, 0))
       throw InputError("Cannot create the directory <" + directory +
                        "> given in <Output directory>.");
+    lock_output_directory(directory, mpi_communicator);
   }
 
 

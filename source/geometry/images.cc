@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <deal.II/base/mpi.h>
@@ -8,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <phasefield/core/file_io.h>
 #include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
 #include <vtkCallbackCommand.h>
@@ -17,6 +19,7 @@
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
+#include <zlib.h>
 
 namespace PhaseField
 {
@@ -156,6 +159,162 @@ namespace PhaseField
         return false;
       }
 
+      /** The big-endian 32-bit number at @p at of @p data. */
+      std::uint32_t
+      big_endian_uint32(const std::string &data, const std::size_t at)
+      {
+        std::uint32_t value = 0;
+        for (std::size_t i = 0; i < 4; ++i)
+          value = (value << 8) | static_cast<unsigned char>(data[at + i]);
+        return value;
+      }
+
+      /** What the IHDR chunk of a PNG file says. */
+      struct PngHeader
+      {
+        std::uint64_t width = 0, height = 0;
+        /** Bits per pixel (channels times bit depth). */
+        unsigned int bits_per_pixel = 0;
+        bool         interlaced     = false;
+      };
+
+      /**
+       * The header of the PNG file contents @p data (whose chunks are
+       * intact), and the concatenated data of its IDAT chunks in
+       * @p compressed; a header that is not a valid IHDR chunk is damage
+       * (@p file: the start of the message).
+       */
+      PngHeader
+      png_header(const std::string &data,
+                 std::string       &compressed,
+                 const std::string &file)
+      {
+        constexpr std::size_t ihdr_at = 8;
+        if (data.size() < ihdr_at + 25 ||
+            big_endian_uint32(data, ihdr_at) != 13 ||
+            data.compare(ihdr_at + 4, 4, "IHDR") != 0)
+          throw InputError(file + " is a damaged PNG image (no valid "
+                                  "IHDR header).");
+        PngHeader          header;
+        const std::size_t  at        = ihdr_at + 8;
+        const unsigned int bit_depth = static_cast<unsigned char>(data[at + 8]);
+        const unsigned int color_type =
+          static_cast<unsigned char>(data[at + 9]);
+        // channels per color type 0 (gray), 2 (RGB), 3 (palette),
+        // 4 (gray + alpha), 6 (RGBA)
+        const unsigned int channels[7] = {1, 0, 3, 1, 2, 0, 4};
+        header.width                   = big_endian_uint32(data, at);
+        header.height                  = big_endian_uint32(data, at + 4);
+        header.interlaced = static_cast<unsigned char>(data[at + 12]) != 0;
+        if (color_type > 6 || channels[color_type] == 0 || bit_depth == 0 ||
+            bit_depth > 16 || header.width == 0 || header.height == 0)
+          throw InputError(file + " is a damaged PNG image (its IHDR header "
+                                  "is not valid).");
+        header.bits_per_pixel = channels[color_type] * bit_depth;
+        for (std::size_t c = ihdr_at; c + 12 <= data.size();)
+          {
+            const std::size_t length = big_endian_uint32(data, c);
+            if (length > data.size() - c - 12 ||
+                data.compare(c + 4, 4, "IEND") == 0)
+              break;
+            if (data.compare(c + 4, 4, "IDAT") == 0)
+              compressed += data.substr(c + 8, length);
+            c += length + 12;
+          }
+        return header;
+      }
+
+      /**
+       * The number of bytes of the decompressed image data that @p header
+       * asks for: per row a filter byte and the pixels, in the seven
+       * passes of Adam7 if interlaced.
+       */
+      std::uint64_t
+      png_data_size(const PngHeader &header)
+      {
+        const auto rows = [&](const std::uint64_t w, const std::uint64_t h) {
+          return w == 0 ? 0 : h * (1 + (w * header.bits_per_pixel + 7) / 8);
+        };
+        if (!header.interlaced)
+          return rows(header.width, header.height);
+        // Adam7: start and step of x and y in each pass
+        const unsigned int x0[7] = {0, 4, 0, 2, 0, 1, 0};
+        const unsigned int dx[7] = {8, 8, 4, 4, 2, 2, 1};
+        const unsigned int y0[7] = {0, 0, 4, 0, 2, 0, 1};
+        const unsigned int dy[7] = {8, 8, 8, 4, 4, 2, 2};
+        std::uint64_t      size  = 0;
+        for (unsigned int p = 0; p < 7; ++p)
+          size += rows((header.width + dx[p] - 1 - x0[p]) / dx[p],
+                       (header.height + dy[p] - 1 - y0[p]) / dy[p]);
+        return size;
+      }
+
+      /**
+       * The number of bytes that the zlib stream @p compressed inflates
+       * to, at most @p limit + 1 (decompressed in pieces and discarded);
+       * -1 if the stream is damaged.
+       */
+      long long
+      inflated_size(const std::string &compressed, const std::uint64_t limit)
+      {
+        z_stream stream = {};
+        if (inflateInit(&stream) != Z_OK)
+          return -1;
+        std::vector<unsigned char> buffer(1 << 16);
+        stream.next_in =
+          reinterpret_cast<Bytef *>(const_cast<char *>(compressed.data()));
+        stream.avail_in      = compressed.size();
+        std::uint64_t total  = 0;
+        int           result = Z_OK;
+        while (result == Z_OK && total <= limit)
+          {
+            stream.next_out  = buffer.data();
+            stream.avail_out = buffer.size();
+            result           = inflate(&stream, Z_NO_FLUSH);
+            total += buffer.size() - stream.avail_out;
+            if (result == Z_BUF_ERROR && stream.avail_in == 0)
+              break;
+          }
+        inflateEnd(&stream);
+        if (result != Z_OK && result != Z_STREAM_END && result != Z_BUF_ERROR)
+          return -1;
+        return static_cast<long long>(total);
+      }
+
+      /**
+       * Check the size of the PNG file @p filename (whose chunks are
+       * intact) before VTK's reader sees it: at most max_image_pixels
+       * pixels, and data for every row its header claims (VTK's reader
+       * crashes on missing rows). Throws InputError starting with
+       * @p file otherwise.
+       */
+      void
+      check_png_size(const std::string &filename, const std::string &file)
+      {
+        std::ifstream     in(filename, std::ios::binary);
+        const std::string data((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        std::string       compressed;
+        const PngHeader   header = png_header(data, compressed, file);
+        if (header.width * header.height > max_image_pixels)
+          throw InputError(
+            file + " has " + std::to_string(header.width) + " x " +
+            std::to_string(header.height) + " pixels, more than the limit of " +
+            std::to_string(max_image_pixels) + " pixels: use a smaller image.");
+        const std::uint64_t needed = png_data_size(header);
+        const long long     found  = inflated_size(compressed, needed);
+        if (found < 0)
+          throw InputError(file + " is a damaged PNG image: its compressed "
+                                  "data cannot be decoded.");
+        if (static_cast<std::uint64_t>(found) < needed)
+          throw InputError(
+            file + " is a damaged PNG image: its header claims " +
+            std::to_string(header.width) + " x " +
+            std::to_string(header.height) + " pixels (" +
+            std::to_string(needed) + " bytes of data), but its data holds " +
+            std::to_string(found) + " bytes.");
+      }
+
       /** Two sizes from `Geometry / Sizes` for @p shape. */
       std::vector<double>
       two_sizes(const GeometryParameters &geometry, const std::string &shape)
@@ -197,6 +356,7 @@ namespace PhaseField
       if (!png_chunks_intact(filename))
         throw InputError(file + " is a damaged PNG image (truncated, or a "
                                 "chunk with a wrong checksum).");
+      check_png_size(filename, file);
       reader->SetFileName(filename.c_str());
       // VTK reports corrupt data through its error events, not exceptions
       bool                       read_error = false;
@@ -410,10 +570,13 @@ namespace PhaseField
       vtkNew<vtkPNGWriter> writer;
       writer->SetFileName(filename.c_str());
       writer->SetInputData(image);
+      errno = 0;
       writer->Write();
-      AssertThrow(writer->GetErrorCode() == 0,
-                  ExcMessage("Could not write the picture <" + filename +
-                             ">."));
+      const int error = errno;
+      // VTK does not report every failed write (a full disk): the file
+      // must be a complete PNG image
+      if (writer->GetErrorCode() != 0 || !png_chunks_intact(filename))
+        throw WriteError(write_failure_message(filename, error));
     }
 
 

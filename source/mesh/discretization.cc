@@ -8,9 +8,11 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <phasefield/core/file_io.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/mesh/narrow_band.h>
@@ -21,6 +23,55 @@ namespace PhaseField
 
   namespace
   {
+    /**
+     * Write the VTU file of each rank and, on rank 0, the PVTU record of
+     * @p step and solution.pvd with @p pvd_records plus this step's
+     * record (the files of DataOut::write_vtu_with_pvtu_record()), each
+     * write checked on every rank (file_io.h). Collective.
+     */
+    template <int dim>
+    void
+    write_vtu_files(const DataOut<dim>                          &data_out,
+                    const std::string                           &directory,
+                    const unsigned int                           step,
+                    const double                                 time,
+                    std::vector<std::pair<double, std::string>> &pvd_records,
+                    const MPI_Comm mpi_communicator)
+    {
+      constexpr unsigned int n_digits = 5;
+      const std::string      stem =
+        "solution_" + Utilities::int_to_string(step, n_digits);
+      const auto piece = [&](const unsigned int rank) {
+        return stem + "." + std::to_string(rank) + ".vtu";
+      };
+      run_on_every_rank(mpi_communicator, [&]() {
+        write_checked(directory + "/" +
+                        piece(
+                          Utilities::MPI::this_mpi_process(mpi_communicator)),
+                      [&](std::ostream &out) { data_out.write_vtu(out); });
+      });
+      std::vector<std::string> pieces;
+      for (unsigned int rank = 0;
+           rank < Utilities::MPI::n_mpi_processes(mpi_communicator);
+           ++rank)
+        pieces.push_back(piece(rank));
+      const std::string pvtu = stem + ".pvtu";
+      pvd_records.emplace_back(time, pvtu);
+      run_on_root(mpi_communicator, [&]() {
+        write_checked(directory + "/" + pvtu, [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
+        // a complete new record or the old one: written, then renamed
+        const std::string pvd = directory + "/solution.pvd";
+        write_checked(pvd + ".tmp", [&](std::ostream &out) {
+          DataOutBase::write_pvd_record(out, pvd_records);
+        });
+        std::filesystem::rename(pvd + ".tmp", pvd);
+      });
+    }
+
+
+
     /**
      * deal.II's smoothing on coarsening and the 2:1 balance at vertices,
      * without eliminate_unrefined_islands (refine a coarse cell surrounded
@@ -581,16 +632,8 @@ namespace PhaseField
     // output 8.71e9 -> 1.36e9 instructions)
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    constexpr unsigned int n_digits = 5;
-    const std::string      pvtu     = data_out.write_vtu_with_pvtu_record(
-      directory + "/", "solution", step, mpi_communicator, n_digits);
-
-    pvd_records.emplace_back(time, pvtu);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        std::ofstream pvd(directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, pvd_records);
-      }
+    write_vtu_files(
+      data_out, directory, step, time, pvd_records, mpi_communicator);
   }
 
 

@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <fstream>
 #include <iomanip>
+#include <phasefield/core/file_io.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/geometry/images.h>
 #include <phasefield/problems/contour_output.h>
@@ -191,17 +192,17 @@ namespace PhaseField
               const MPI_Comm        comm)
     {
       run_on_root(comm, [&]() {
-        std::ofstream file(filename);
-        AssertThrow(file, ExcMessage("Cannot write <" + filename + ">."));
-        file << (dim == 2 ? "x," : "x,y,") << "alpha_target,alpha\n"
-             << std::setprecision(10);
-        for (unsigned int i = 0; i < labelings.grid.size(); ++i)
-          {
-            const Point<dim - 1> p = labelings.grid.point(i);
-            for (unsigned int k = 0; k + 1 < dim; ++k)
-              file << p[k] << ',';
-            file << labelings.target[i] << ',' << labelings.alpha[i] << '\n';
-          }
+        write_checked(filename, [&](std::ostream &file) {
+          file << (dim == 2 ? "x," : "x,y,") << "alpha_target,alpha\n"
+               << std::setprecision(10);
+          for (unsigned int i = 0; i < labelings.grid.size(); ++i)
+            {
+              const Point<dim - 1> p = labelings.grid.point(i);
+              for (unsigned int k = 0; k + 1 < dim; ++k)
+                file << p[k] << ',';
+              file << labelings.target[i] << ',' << labelings.alpha[i] << '\n';
+            }
+        });
       });
     }
 
@@ -256,9 +257,8 @@ namespace PhaseField
         data_out.add_data_vector(target, "alpha_target");
         data_out.add_data_vector(alpha, "alpha");
         data_out.build_patches();
-        std::ofstream file(filename);
-        AssertThrow(file, ExcMessage("Cannot write <" + filename + ">."));
-        data_out.write_vtu(file);
+        write_checked(filename,
+                      [&](std::ostream &file) { data_out.write_vtu(file); });
       });
     }
 

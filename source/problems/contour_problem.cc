@@ -78,7 +78,12 @@ namespace PhaseField
         if (i > first)
           move_to_level(i);
         start_level(i);
-        TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(this->level_prm),
+        typename TimeLoop<dim>::Settings settings =
+          TimeLoop<dim>::Settings::from(this->level_prm,
+                                        this->setup.program_name);
+        // a level whose steps are done continues with the next one
+        settings.refuse_empty_resume = false;
+        TimeLoop<dim> time_loop(settings,
                                 this->discretization,
                                 *this->scheme,
                                 *this,

@@ -96,7 +96,8 @@ namespace PhaseField
           start = coarse_start_value();
       }
     // the scheme of the finest level exists only now
-    TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(prm),
+    TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(prm,
+                                                          setup.program_name),
                             discretization,
                             *scheme,
                             *this,

@@ -3,6 +3,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <map>
+#include <phasefield/core/statistics.h>
 #include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/restoration_problem.h>
@@ -169,20 +170,21 @@ namespace PhaseField
       Images::sample_on_pixel_grid(discretization.get_dof_handler(),
                                    solution.block(0),
                                    n);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
-    // the initial data is a function: sample it directly
-    const Shapes::PhaseFieldProfile<2> u0(*setup.signed_distance,
-                                          prm.model.epsilon);
-    std::vector<double>                initial(n * n);
-    for (unsigned int j = 0; j < n; ++j)
-      for (unsigned int i = 0; i < n; ++i)
-        initial[j * n + i] = u0.value(Point<2>((i + 0.5) / n, (j + 0.5) / n));
-    const std::string &directory = prm.output_directory;
-    const Box2D       &region    = restoration.region;
-    Images::write_picture(initial, n, region, directory + "/initial.png");
-    Images::write_picture(restored, n, region, directory + "/restored.png");
-    std::cout << "Pictures: " << directory << "/initial.png, " << directory
-              << "/restored.png" << std::endl;
+    // on rank 0; a failed write stops every rank
+    run_on_root(mpi_communicator, [&]() {
+      // the initial data is a function: sample it directly
+      const Shapes::PhaseFieldProfile<2> u0(*setup.signed_distance,
+                                            prm.model.epsilon);
+      std::vector<double>                initial(n * n);
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          initial[j * n + i] = u0.value(Point<2>((i + 0.5) / n, (j + 0.5) / n));
+      const std::string &directory = prm.output_directory;
+      const Box2D       &region    = restoration.region;
+      Images::write_picture(initial, n, region, directory + "/initial.png");
+      Images::write_picture(restored, n, region, directory + "/restored.png");
+      std::cout << "Pictures: " << directory << "/initial.png, " << directory
+                << "/restored.png" << std::endl;
+    });
   }
 } // namespace PhaseField

@@ -27,7 +27,14 @@ namespace PhaseField
   void
   DirectFactorization::analyze_and_factorize()
   {
-    // the solver refers to the problem: release it first
+    // the solver refers to the problem: release it first. Its destructor
+    // asks the problem's operator for the communicator, and refactorize()
+    // may have replaced that matrix (copy_from() with another pattern,
+    // e.g. after a checkpoint's reload): point the problem at the current
+    // one, so that the destructor does not read the freed one
+    if (problem != nullptr)
+      problem->SetOperator(
+        const_cast<Epetra_CrsMatrix *>(&factorized_matrix.trilinos_matrix()));
     solver.reset();
     problem = std::make_unique<Epetra_LinearProblem>();
     problem->SetOperator(

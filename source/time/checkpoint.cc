@@ -1,8 +1,12 @@
+#include <algorithm>
 #include <boost/serialization/string.hpp>
+#include <cmath>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <phasefield/core/file_io.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/time/checkpoint.h>
@@ -20,6 +24,8 @@ namespace PhaseField
       const std::string temporary_suffix   = ".tmp";
       const std::string state_filename     = "state.txt";
       const std::string mesh_base_filename = "mesh";
+      const std::string metadata_filename  = "checkpoint.txt";
+      const std::string metadata_header    = "phasefield checkpoint 1";
 
       /**
        * The step of the checkpoint directory @p name ("checkpoint-<step>",
@@ -86,6 +92,95 @@ namespace PhaseField
 
 
 
+      /**
+       * Throw an InputError naming @p filename if @p state cannot be the
+       * state of a checkpoint.
+       */
+      void
+      check_sanity(const State &state, const std::string &filename)
+      {
+        std::string problem;
+        if (state.step < state.step_offset)
+          problem = "step " + std::to_string(state.step) +
+                    " is before the step offset " +
+                    std::to_string(state.step_offset);
+        else if (!std::isfinite(state.time) || state.time < 0 ||
+                 (state.step > 0 && state.time == 0))
+          problem = "the time " + std::to_string(state.time) +
+                    " does not belong to step " + std::to_string(state.step);
+        else if (!std::isfinite(state.state_tau) || !(state.state_tau > 0))
+          problem = "the step size " + std::to_string(state.state_tau) +
+                    " is not a positive number";
+        else if (!std::isfinite(state.step_size_limit) ||
+                 state.step_size_limit < 0)
+          problem = "the step size limit " +
+                    std::to_string(state.step_size_limit) +
+                    " is not a number >= 0";
+        else if (state.pvd_records.size() > state.step + 1)
+          problem = "it lists more outputs than steps";
+        if (!problem.empty())
+          throw InputError("The checkpoint file <" + filename +
+                           "> is damaged: " + problem + ".");
+      }
+
+
+
+      /**
+       * The text of checkpoint.txt for the complete files of the
+       * checkpoint directory @p directory and @p parameters.
+       */
+      std::string
+      metadata_text(const fs::path &directory, const Parameters &parameters)
+      {
+        std::ostringstream out;
+        out << metadata_header << '\n';
+        for (const auto &[name, value] : parameters)
+          out << "parameter " << name << " = " << value << '\n';
+        std::vector<std::string> names;
+        for (const auto &entry : fs::directory_iterator(directory))
+          if (entry.is_regular_file() &&
+              entry.path().filename() != metadata_filename)
+            names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        for (const std::string &name : names)
+          out << "file " << name << ' ' << fs::file_size(directory / name)
+              << ' ' << file_checksum((directory / name).string()) << '\n';
+        return out.str();
+      }
+
+
+
+      /**
+       * On rank 0: refuse to write a checkpoint of @p n_cells cells with
+       * @p n_fields fields into @p directory if the file system has less
+       * room than twice its expected size.
+       */
+      void
+      check_free_space(const std::string &directory,
+                       const double       n_cells,
+                       const unsigned int n_fields,
+                       const unsigned int dim)
+      {
+        // p4est's quadrants, and per cell the fields' values at its
+        // 2^dim vertices
+        const double    bytes = n_cells * (64. + 8. * n_fields * (1u << dim));
+        std::error_code error;
+        const fs::space_info space = fs::space(directory, error);
+        if (error || space.available >= 2 * bytes)
+          return;
+        throw WriteError(
+          "Cannot write a checkpoint into <" + directory +
+          ">: it needs about " +
+          std::to_string(static_cast<long long>(bytes / 1e6) + 1) +
+          " MB, but the file system has " +
+          std::to_string(static_cast<long long>(space.available / 1e6)) +
+          " MB free. The run stops here: statistics.csv and the output are "
+          "complete up to this step, and the last complete checkpoint (if "
+          "any) is intact.");
+      }
+
+
+
       /** The State in the text @p text of the state file @p filename. */
       State
       from_text(const std::string &text, const std::string &filename)
@@ -114,9 +209,88 @@ namespace PhaseField
         if (!in || limit_key != "step_size_limit" || key[0] != "step" ||
             key[4] != "pvd_records" || tail_key[0] != "step_offset" ||
             tail_key[2] != "problem_data")
-          throw std::runtime_error("The checkpoint file <" + filename +
-                                   "> is damaged.");
+          throw InputError("The checkpoint file <" + filename +
+                           "> is damaged.");
+        check_sanity(state, filename);
         return state;
+      }
+
+      /**
+       * Check the checkpoint file of the line `<name> <size> <checksum>`
+       * @p entry of the metadata file @p metadata of the checkpoint
+       * @p path.
+       */
+      void
+      verify_file(const std::string &entry,
+                  const std::string &path,
+                  const std::string &metadata)
+      {
+        std::istringstream in(entry);
+        std::string        name, checksum;
+        std::uintmax_t     size = 0;
+        if (!(in >> name >> size >> checksum))
+          throw InputError("The checkpoint file <" + metadata +
+                           "> is damaged (line <file " + entry + ">).");
+        const std::string    filename = path + "/" + name;
+        std::error_code      error;
+        const std::uintmax_t found = fs::file_size(filename, error);
+        std::string          problem;
+        if (error)
+          problem = "is missing";
+        else if (found != size)
+          problem = "has " + std::to_string(found) + " bytes instead of " +
+                    std::to_string(size) + (found < size ? " (truncated)" : "");
+        else if (file_checksum(filename) != checksum)
+          problem = "does not have the checksum recorded in <" + metadata +
+                    "> (changed or damaged)";
+        if (!problem.empty())
+          throw InputError("The checkpoint file <" + filename + "> " + problem +
+                           ": the checkpoint <" + path +
+                           "> cannot be used. Start a new run with "
+                           "<Checkpoint / Resume> = false (or restore the "
+                           "file).");
+      }
+
+
+
+      /**
+       * Compare the line `<name> = <value>` @p entry of the metadata file
+       * @p metadata with this run's @p parameters.
+       */
+      void
+      verify_parameter(const std::string              &entry,
+                       const std::string              &metadata,
+                       const Parameters               &parameters,
+                       const std::vector<std::string> &allowed_changes)
+      {
+        const std::size_t equals = entry.find(" = ");
+        if (equals == std::string::npos)
+          throw InputError("The checkpoint file <" + metadata +
+                           "> is damaged (line <parameter " + entry + ">).");
+        const std::string name  = entry.substr(0, equals);
+        const std::string saved = entry.substr(equals + 3);
+        const auto        current =
+          std::find_if(parameters.begin(),
+                       parameters.end(),
+                       [&](const auto &p) { return p.first == name; });
+        if (current == parameters.end() || current->second == saved)
+          return;
+        const std::string difference =
+          "<" + name + "> = " + saved + " in the checkpoint (<" + metadata +
+          ">), but " + current->second + " in this run";
+        if (std::find(allowed_changes.begin(), allowed_changes.end(), name) !=
+            allowed_changes.end())
+          {
+            std::cout << "Warning: resuming with " << difference
+                      << " (allowed by <Checkpoint / Allow parameter change>)."
+                      << std::endl;
+            return;
+          }
+        throw InputError("Cannot resume: " + difference +
+                         ". Resume with the parameters of the run that wrote "
+                         "the checkpoint, or allow the change with <Checkpoint "
+                         "/ Allow parameter change> = " +
+                         name + ".");
       }
     } // namespace
 
@@ -135,33 +309,68 @@ namespace PhaseField
     write(const std::string         &directory,
           const Discretization<dim> &discretization,
           const BlockVector         &state,
-          const State               &time_stepping_state)
+          const State               &time_stepping_state,
+          const Parameters          &parameters)
     {
       const MPI_Comm    comm = discretization.get_mpi_communicator();
       const std::string name =
         prefix + std::to_string(time_stepping_state.step);
       const fs::path final_path = fs::path(directory) / name;
       const fs::path temporary  = final_path.string() + temporary_suffix;
+      const double   n_cells =
+        discretization.get_triangulation().n_global_active_cells();
       run_on_root(comm, [&]() {
+        check_free_space(directory, n_cells, state.n_blocks(), dim);
         fs::remove_all(temporary);
         fs::create_directory(temporary);
       });
       discretization.save(mesh_filename(temporary.string()), state);
       run_on_root(comm, [&]() {
-        {
-          std::ofstream out(temporary / state_filename);
-          out << to_text(time_stepping_state);
-          if (!out.flush())
-            throw std::runtime_error("Cannot write the checkpoint file <" +
-                                     (temporary / state_filename).string() +
-                                     ">.");
-        }
+        write_checked((temporary / state_filename).string(),
+                      [&](std::ostream &out) {
+                        out << to_text(time_stepping_state);
+                      });
+        const std::string metadata = metadata_text(temporary, parameters);
+        write_checked((temporary / metadata_filename).string(),
+                      [&](std::ostream &out) { out << metadata; });
         // the rename completes the checkpoint; only then the older ones go
         fs::remove_all(final_path);
         fs::rename(temporary, final_path);
         for (const fs::path &path : checkpoint_directories(directory))
           if (path != final_path)
             fs::remove_all(path);
+      });
+    }
+
+
+
+    void
+    verify(const std::string              &path,
+           const Parameters               &parameters,
+           const std::vector<std::string> &allowed_changes,
+           const MPI_Comm                  mpi_communicator)
+    {
+      run_on_root(mpi_communicator, [&]() {
+        const std::string metadata = path + "/" + metadata_filename;
+        std::ifstream     in(metadata);
+        std::string       line;
+        if (!in || !std::getline(in, line) || line != metadata_header)
+          throw InputError("The checkpoint file <" + metadata +
+                           "> is missing or damaged: the checkpoint <" + path +
+                           "> cannot be verified (written by an older "
+                           "version, or damaged). Start a new run with "
+                           "<Checkpoint / Resume> = false.");
+        while (std::getline(in, line))
+          if (line.rfind("parameter ", 0) == 0)
+            verify_parameter(line.substr(10),
+                             metadata,
+                             parameters,
+                             allowed_changes);
+          else if (line.rfind("file ", 0) == 0)
+            verify_file(line.substr(5), path, metadata);
+          else
+            throw InputError("The checkpoint file <" + metadata +
+                             "> is damaged (line <" + line + ">).");
       });
     }
 
@@ -203,8 +412,8 @@ namespace PhaseField
       run_on_root(mpi_communicator, [&]() {
         std::ifstream in(filename);
         if (!in)
-          throw std::runtime_error("Cannot read the checkpoint file <" +
-                                   filename + ">.");
+          throw InputError("Cannot read the checkpoint file <" + filename +
+                           ">.");
         text.assign(std::istreambuf_iterator<char>(in),
                     std::istreambuf_iterator<char>());
         from_text(text, filename);
@@ -230,11 +439,13 @@ namespace PhaseField
     write<2>(const std::string &,
              const Discretization<2> &,
              const BlockVector &,
-             const State &);
+             const State &,
+             const Parameters &);
     template void
     write<3>(const std::string &,
              const Discretization<3> &,
              const BlockVector &,
-             const State &);
+             const State &,
+             const Parameters &);
   } // namespace Checkpoint
 } // namespace PhaseField

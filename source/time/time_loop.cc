@@ -1,9 +1,12 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
+#include <limits>
+#include <phasefield/core/stop_request.h>
 #include <phasefield/time/checkpoint.h>
 #include <phasefield/time/finite_fields.h>
 #include <phasefield/time/time_loop.h>
+#include <sstream>
 
 namespace PhaseField
 {
@@ -50,8 +53,32 @@ namespace PhaseField
 
 
   template <int dim>
+  void
+  TimeLoop<dim>::check_time(const Checkpoint::State &saved,
+                            const std::string       &path) const
+  {
+    // the scheduled sizes are the largest a step takes
+    double longest = 0;
+    for (unsigned int step = 1; step <= saved.step; ++step)
+      longest += settings.model.step_size(step);
+    constexpr double roundoff = 1e-12;
+    if (saved.time <= longest * (1 + roundoff))
+      return;
+    throw InputError("The checkpoint <" + path + "> is after step " +
+                     std::to_string(saved.step) + " at time " +
+                     std::to_string(saved.time) + ", later than " +
+                     std::to_string(longest) +
+                     ", which steps of <Time stepping / Tau> (and the ramp-up) "
+                     "reach: its state.txt is damaged, or <Time stepping / "
+                     "Tau> is not that of the run that wrote it.");
+  }
+
+
+
+  template <int dim>
   typename TimeLoop<dim>::Settings
-  TimeLoop<dim>::Settings::from(const WillmoreParameters &parameters)
+  TimeLoop<dim>::Settings::from(const WillmoreParameters &parameters,
+                                const std::string        &program_name)
   {
     Settings s;
     s.model               = parameters.model;
@@ -64,6 +91,22 @@ namespace PhaseField
     s.output_directory    = parameters.output_directory;
     s.checkpoint_interval = parameters.checkpoint.interval;
     s.extrapolated_start  = parameters.model.extrapolated_start;
+    s.allowed_changes     = parameters.checkpoint.allowed_changes;
+    const auto exact      = [](const double value) {
+      std::ostringstream text;
+      text.precision(std::numeric_limits<double>::max_digits10);
+      text << value;
+      return text.str();
+    };
+    s.checkpoint_parameters = {
+      {"Program", program_name},
+      {"Dimension", std::to_string(parameters.dimension)},
+      {"Mesh / Finest level", std::to_string(parameters.mesh.finest_level)},
+      {"Mesh / Coarsest level", std::to_string(parameters.mesh.coarsest_level)},
+      {"Mesh / Adaptive", parameters.mesh.adaptive ? "true" : "false"},
+      {"Phase field / Epsilon", exact(parameters.model.epsilon)},
+      {"Time stepping / Scheme", scheme_name(parameters.model.scheme)},
+      {"Time stepping / Inner tau", exact(parameters.model.inner_tau)}};
     return s;
   }
 
@@ -140,6 +183,15 @@ namespace PhaseField
   TimeLoop<dim>::resume(BlockVector &state)
   {
     last_step = load_checkpoint(state);
+    if (last_step >= final_step && settings.refuse_empty_resume)
+      throw InputError(
+        "<Checkpoint / Resume> = true, but the last checkpoint in <" +
+        settings.output_directory + "> is after step " +
+        std::to_string(last_step) + ", and this run ends with step " +
+        std::to_string(final_step) +
+        " (<Time stepping / Number of steps> plus <Ramp-up steps>): there is "
+        "no step to take. Raise <Time stepping / Number of steps> to continue "
+        "the run.");
     statistics =
       std::make_unique<StatisticsFile>(settings.output_directory +
                                          "/statistics.csv",
@@ -183,7 +235,14 @@ namespace PhaseField
     const MPI_Comm     comm = discretization.get_mpi_communicator();
     const std::string  path =
       Checkpoint::find_last(settings.output_directory, comm);
+    // before p4est or anything else reads the files
+    Checkpoint::verify(path,
+                       settings.checkpoint_parameters,
+                       settings.allowed_changes,
+                       comm);
     const Checkpoint::State saved = Checkpoint::read_state(path, comm);
+    if (saved.step_offset == 0)
+      check_time(saved, path);
     if (saved.n_fields != scheme.n_fields())
       throw InputError("The checkpoint <" + path + "> has " +
                        std::to_string(saved.n_fields) +
@@ -258,7 +317,39 @@ namespace PhaseField
           write_checkpoint(step, state, finished);
         if (finished)
           break;
+        stop_if_requested(step, state, checkpoint);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::stop_if_requested(const unsigned int step,
+                                   BlockVector       &state,
+                                   const bool         checkpoint_written)
+  {
+    const std::string signal =
+      stop_requested(discretization.get_mpi_communicator());
+    if (signal.empty())
+      return;
+    std::string checkpoint =
+      "no checkpoint was written (<Checkpoint / Interval> = 0).";
+    if (settings.checkpoint_interval > 0)
+      {
+        // the state is that of the start of the next step (re-meshed)
+        if (!checkpoint_written)
+          write_checkpoint(step, state, false);
+        checkpoint = "the checkpoint of this step is in <" +
+                     settings.output_directory + "/checkpoint-" +
+                     std::to_string(step) +
+                     ">: continue with <Checkpoint / Resume> = true.";
+      }
+    throw StopRequest("Stopped by " + signal + " after step " +
+                      std::to_string(step) +
+                      ": statistics.csv and the output are complete up to "
+                      "this step, and " +
+                      checkpoint);
   }
 
 
@@ -326,7 +417,11 @@ namespace PhaseField
     saved.step_offset     = step_offset;
     saved.finished        = finished && step != final_step;
     saved.problem_data    = client.checkpoint_data();
-    Checkpoint::write(settings.output_directory, discretization, state, saved);
+    Checkpoint::write(settings.output_directory,
+                      discretization,
+                      state,
+                      saved,
+                      settings.checkpoint_parameters);
     pcout << "  checkpoint written after step " << step << std::endl;
     // continue from what was written, as a resumed run does: the same
     // cell and DoF order, a fresh solver
@@ -454,6 +549,8 @@ namespace PhaseField
             continue;
           }
         state = saved;
+        if (!std::isfinite(report.final_residual_norm))
+          non_finite_residual_message(step, tau);
         AssertThrow(
           halvings < settings.max_step_halvings,
           ExcMessage(step_failure_message(scheme.name(), step, halvings, tau)));
@@ -464,6 +561,26 @@ namespace PhaseField
                  "step, tau = "
               << tau << std::endl;
       }
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::non_finite_residual_message(const unsigned int step,
+                                             const double       tau) const
+  {
+    pcout << "  step " << step << ": the residual of the " << scheme.name()
+          << " scheme became "
+          << "not finite (nan or inf) at tau = " << tau
+          << ": the discrete system is too badly scaled. Check <Time "
+             "stepping / Inner tau> (the curvature is (U - V) / inner tau; "
+             "this run has inner tau = "
+          << settings.model.inner_tau
+          << ", epsilon = " << settings.model.epsilon
+          << ") and <Phase field / Epsilon>; the step is retried with a "
+             "smaller tau."
+          << std::endl;
   }
 
 

@@ -334,6 +334,12 @@ namespace PhaseField
      * starting from the initial shape.
      */
     bool resume;
+    /**
+     * The parameters (as `Subsection / Name`) that may differ from those
+     * recorded in the checkpoint on resume (a warning is printed for
+     * each); any other difference refuses the resume.
+     */
+    std::vector<std::string> allowed_changes;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -44,7 +44,12 @@ namespace PhaseField
                    const MPI_Comm                  mpi_communicator,
                    const unsigned int              last_kept_step);
 
-    /** Append one row; must have as many entries as there are columns. */
+    /**
+     * Append one row; must have as many entries as there are columns.
+     * The row is flushed and the file's state checked: if the write
+     * failed (disk full), every rank throws a WriteError naming the
+     * file. Collective.
+     */
     void
     add_row(const std::vector<double> &values);
 
@@ -54,24 +59,28 @@ namespace PhaseField
     header(const std::vector<std::string> &columns);
 
     const std::size_t n_columns;
-    const bool        is_root;
-    std::ofstream     file;
+    const MPI_Comm    mpi_communicator;
+    const std::string filename;
+    /** The open file (rank 0 only). */
+    std::ofstream file;
   };
 
   /**
    * Run @p function on rank 0 of @p mpi_communicator only (file system
    * work); if it throws there, every rank throws: InputError as
-   * InputError, any other std::exception as std::runtime_error with the
-   * same message. So no rank waits for one that failed. Collective.
+   * InputError, WriteError as WriteError, any other exception as
+   * std::runtime_error with the same message (run_on_every_rank()). So
+   * no rank waits for one that failed. Collective.
    */
   void
   run_on_root(const MPI_Comm               mpi_communicator,
               const std::function<void()> &function);
 
   /**
-   * Create the output directory @p directory on rank 0; every rank
-   * returns once it exists, or every rank throws an InputError naming
-   * <Output directory> if it cannot be created. Collective.
+   * Create the output directory @p directory on rank 0 and lock it for
+   * this process (lock_output_directory()); every rank returns once it
+   * exists, or every rank throws an InputError naming <Output directory>
+   * if it cannot be created or another run holds it. Collective.
    */
   void
   create_output_directory(const std::string &directory,

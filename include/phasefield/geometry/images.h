@@ -40,6 +40,13 @@ namespace PhaseField
    */
   namespace Images
   {
+    /**
+     * The largest image that read_gray_image() accepts, in pixels (width
+     * times height; 5000 x 5000): a larger PNG header is refused before
+     * any pixel is decoded.
+     */
+    constexpr unsigned long long max_image_pixels = 25000000;
+
     /** A gray image: values in [0,1], row by row from the bottom row. */
     struct GrayImage
     {
@@ -52,7 +59,9 @@ namespace PhaseField
      * Read the PNG image @p filename (gray, gray + alpha: the gray value;
      * RGB(A): the mean of R, G, B). Missing files, files that are not PNG
      * and damaged PNG files (truncated, wrong chunk checksums, undecodable
-     * data) become an InputError naming the file and @p parameter_name.
+     * data, less data than the header's size asks for) and images of more
+     * than max_image_pixels pixels become an InputError naming the file
+     * and @p parameter_name.
      */
     GrayImage
     read_gray_image(const std::string &filename,

@@ -17,7 +17,12 @@ namespace PhaseField
    * - `mesh`, `mesh_fixed.data`, `mesh.info`: the p4est mesh with all
    *   fields (Discretization::save()), readable on any number of ranks;
    * - `state.txt`: the time-stepping state (CheckpointState), written by
-   *   rank 0.
+   *   rank 0;
+   * - `checkpoint.txt`: the parameters that give the state its meaning
+   *   (Parameters: program, Dimension, levels, Epsilon, scheme, ...) and
+   *   the size and checksum (64-bit FNV-1a) of each of the other files,
+   *   written by rank 0 after they are complete; verify() checks them
+   *   before a resume reads anything else.
    *
    * A checkpoint is written as `checkpoint-<k>.tmp` and renamed when it is
    * complete, and only then are older checkpoints deleted: a run killed
@@ -66,16 +71,43 @@ namespace PhaseField
     };
 
     /**
-     * Write the checkpoint of @p state (the fields on @p discretization)
-     * and @p time_stepping_state into @p directory and delete the older
-     * ones there. Collective.
+     * The parameters recorded in a checkpoint, as (`Subsection / Name`,
+     * value) pairs; the first is the program (`Program`).
+     */
+    using Parameters = std::vector<std::pair<std::string, std::string>>;
+
+    /**
+     * Write the checkpoint of @p state (the fields on @p discretization),
+     * @p time_stepping_state and @p parameters into @p directory and
+     * delete the older ones there. First checks that the file system
+     * has room for about twice the expected size (a full disk would end
+     * in an abort inside p4est); every file is checked after it is
+     * written. A failed write throws a WriteError naming the file on
+     * every rank and leaves the previous checkpoint as it is.
+     * Collective.
      */
     template <int dim>
     void
     write(const std::string         &directory,
           const Discretization<dim> &discretization,
           const BlockVector         &state,
-          const State               &time_stepping_state);
+          const State               &time_stepping_state,
+          const Parameters          &parameters);
+
+    /**
+     * Verify the checkpoint @p path before it is read: every file listed
+     * in its `checkpoint.txt` must exist with the recorded size and
+     * checksum (a missing, empty, truncated or changed file is an
+     * InputError naming it), and every recorded parameter must have the
+     * value in @p parameters, unless its name is in @p allowed_changes
+     * (then a warning is printed). Throws InputError on every rank.
+     * Collective.
+     */
+    void
+    verify(const std::string              &path,
+           const Parameters               &parameters,
+           const std::vector<std::string> &allowed_changes,
+           const MPI_Comm                  mpi_communicator);
 
     /**
      * The path of the newest complete checkpoint in @p directory. Throws
@@ -87,7 +119,9 @@ namespace PhaseField
 
     /**
      * The time-stepping state of the checkpoint @p path (read on rank 0,
-     * broadcast to all). Collective.
+     * broadcast to all). Values that cannot belong to a checkpoint (step
+     * before the step offset, a time or step size that is negative or not
+     * finite) are an InputError naming the file. Collective.
      */
     State
     read_state(const std::string &path, const MPI_Comm mpi_communicator);

@@ -11,6 +11,7 @@
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/energies.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
+#include <phasefield/time/checkpoint.h>
 #include <phasefield/time/start_value_predictor.h>
 #include <string>
 #include <utility>
@@ -180,10 +181,29 @@ namespace PhaseField
        * the StartValuePredictor's extrapolation.
        */
       bool extrapolated_start;
+      /**
+       * The parameters a checkpoint records and a resume compares
+       * (Checkpoint::Parameters: program, Dimension, levels, Epsilon,
+       * scheme, Inner tau, Adaptive).
+       */
+      std::vector<std::pair<std::string, std::string>> checkpoint_parameters;
+      /** CheckpointParameters::allowed_changes. */
+      std::vector<std::string> allowed_changes;
+      /**
+       * Is a resume whose checkpoint is at or after the last step
+       * (nothing to do) an InputError? Not for a stage of a series
+       * (shape from contour's levels), which then continues with the next
+       * stage.
+       */
+      bool refuse_empty_resume = true;
 
-      /** The settings of the Willmore-flow parameters. */
+      /**
+       * The settings of the Willmore-flow parameters of the program
+       * @p program_name.
+       */
       static Settings
-      from(const WillmoreParameters &parameters);
+      from(const WillmoreParameters &parameters,
+           const std::string        &program_name = "");
     };
 
     TimeLoop(const Settings                   &settings,
@@ -298,6 +318,14 @@ namespace PhaseField
     load_checkpoint(BlockVector &state);
 
     /**
+     * Throw an InputError if the time of the checkpoint @p saved (at
+     * @p path, of a run without step offset) is later than the scheduled
+     * step sizes reach by its step.
+     */
+    void
+    check_time(const Checkpoint::State &saved, const std::string &path) const;
+
+    /**
      * Write the checkpoint after step @p step (@p finished: the run ends
      * with it), then continue from it as a
      * resumed run would (load_checkpoint()): the same mesh in the order
@@ -310,6 +338,17 @@ namespace PhaseField
     write_checkpoint(const unsigned int step,
                      BlockVector       &state,
                      const bool         finished);
+
+    /**
+     * At the end of step @p step (not the last one): if SIGTERM or SIGINT
+     * reached any rank (stop_requested()), write the checkpoint of
+     * @p state if checkpoints are on and @p checkpoint_written is false,
+     * and throw a StopRequest on every rank that says so.
+     */
+    void
+    stop_if_requested(const unsigned int step,
+                      BlockVector       &state,
+                      const bool         checkpoint_written);
 
     /**
      * Step @p step from old_state into @p state by @p attempt, halved on
@@ -364,6 +403,14 @@ namespace PhaseField
     /** Distribute the constraints in the transferred history. */
     void
     distribute_history_constraints();
+
+    /**
+     * Print why step @p step at size @p tau failed with a residual that is
+     * not finite, naming the parameters that scale it.
+     */
+    void
+    non_finite_residual_message(const unsigned int step,
+                                const double       tau) const;
 
     /**
      * Thesis Cor. 3.3: on a fixed mesh the minimiser of the outer energy
