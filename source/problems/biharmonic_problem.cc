@@ -311,7 +311,7 @@ namespace PhaseField
   BiharmonicProblem<dim>::BiharmonicProblem(
     const BiharmonicParameters &parameters,
     const unsigned int          level)
-    : prm(parameters)
+    : biharmonic_parameters(parameters)
     , level(level)
     , h(std::ldexp(1.0, -static_cast<int>(level)))
     , step_sizes(parameters.time.step_sizes(h))
@@ -339,7 +339,7 @@ namespace PhaseField
     discretization.create_mesh(nullptr, 1.);
     const LumpedOperators<dim> &operators = discretization.get_operators();
     scheme                                = create_time_stepping_scheme<dim>(
-      biharmonic_scheme<dim>(prm,
+      biharmonic_scheme<dim>(biharmonic_parameters,
                              step_sizes.inner_tau,
                              exact.forced ? &forcing_vector : nullptr),
       discretization,

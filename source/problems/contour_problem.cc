@@ -48,11 +48,12 @@ namespace PhaseField
   void
   ContourProblem<dim>::run()
   {
-    create_output_directory(this->prm.output_directory, this->mpi_communicator);
-    const bool         resume = this->prm.checkpoint.resume;
+    create_output_directory(this->willmore_parameters.output_directory,
+                            this->mpi_communicator);
+    const bool         resume = this->willmore_parameters.checkpoint.resume;
     const unsigned int first  = resume ? resumed_level_index() : 0;
-    this->level_prm           = parameters.for_level(first);
-    this->create_scheme(this->level_prm);
+    this->level_parameters    = parameters.for_level(first);
+    this->create_scheme(this->level_parameters);
     this->print_header();
     this->pcout << "levels";
     for (const unsigned int level : parameters.multilevel.levels)
@@ -65,8 +66,9 @@ namespace PhaseField
       {
         {
           TimerOutput::Scope t(this->computing_timer, "mesh: initial");
-          this->discretization.create_mesh(this->setup.signed_distance.get(),
-                                           this->level_prm.model.epsilon);
+          this->discretization.create_mesh(
+            this->setup.signed_distance.get(),
+            this->level_parameters.model.epsilon);
         }
         TimerOutput::Scope t(this->computing_timer, "initialisation");
         this->initialize_fields();
@@ -79,7 +81,7 @@ namespace PhaseField
           move_to_level(i);
         start_level(i);
         typename TimeLoop<dim>::Settings settings =
-          TimeLoop<dim>::Settings::from(this->level_prm,
+          TimeLoop<dim>::Settings::from(this->level_parameters,
                                         this->setup.program_name);
         // a level whose steps are done continues with the next one
         settings.refuse_empty_resume = false;
@@ -111,7 +113,8 @@ namespace PhaseField
   ContourProblem<dim>::resumed_level_index() const
   {
     const std::string path =
-      Checkpoint::find_last(this->prm.output_directory, this->mpi_communicator);
+      Checkpoint::find_last(this->willmore_parameters.output_directory,
+                            this->mpi_communicator);
     const std::vector<double> data =
       Checkpoint::read_state(path, this->mpi_communicator).problem_data;
     if (data.size() < n_level_entries)
@@ -139,7 +142,7 @@ namespace PhaseField
   ContourProblem<dim>::checkpoint_data() const
   {
     std::vector<double> data{double(level_index),
-                             double(this->level_prm.mesh.finest_level)};
+                             double(this->level_parameters.mesh.finest_level)};
     data.insert(data.end(), criterion_history.begin(), criterion_history.end());
     return data;
   }
@@ -164,20 +167,20 @@ namespace PhaseField
   {
     TimerOutput::Scope t(this->computing_timer, "labeling: target");
     level_index              = index;
-    this->level_prm          = parameters.for_level(index);
-    const unsigned int level = this->level_prm.mesh.finest_level;
+    this->level_parameters   = parameters.for_level(index);
+    const unsigned int level = this->level_parameters.mesh.finest_level;
     mismatch_term            = std::make_unique<MismatchTerm<dim>>(
       this->discretization,
       level,
       target_on(HuffmanLabeling::LabelingGrid<dim>(level)),
       parameters.model.mismatch_weight);
     criterion_history.clear();
-    this->pcout << "level " << this->level_prm.mesh.finest_level
-                << ": h = " << this->level_prm.mesh.h()
-                << ", epsilon = " << this->level_prm.model.epsilon
-                << ", tau = " << this->level_prm.model.tau
-                << ", inner tau = " << this->level_prm.model.inner_tau << ", "
-                << this->level_prm.model.n_steps << " steps"
+    this->pcout << "level " << this->level_parameters.mesh.finest_level
+                << ": h = " << this->level_parameters.mesh.h()
+                << ", epsilon = " << this->level_parameters.model.epsilon
+                << ", tau = " << this->level_parameters.model.tau
+                << ", inner tau = " << this->level_parameters.model.inner_tau
+                << ", " << this->level_parameters.model.n_steps << " steps"
                 << (parameters.multilevel.transition ==
                         LevelTransition::automatic ?
                       " at most" :
@@ -197,7 +200,8 @@ namespace PhaseField
       // U will be sharpened to the finer epsilon: |U_sharp| < tanh(b) iff
       // |U| < tanh(b eps_new / eps_old), so the band of the finer profile
       // is refined, not the wider one of the coarse epsilon
-      const double ratio = this->level_prm.model.epsilon / next.model.epsilon;
+      const double ratio =
+        this->level_parameters.model.epsilon / next.model.epsilon;
       this->discretization.refine_to_level(next.mesh.finest_level,
                                            this->solution,
                                            parameters.multilevel.sharpen ?
@@ -231,7 +235,7 @@ namespace PhaseField
     const std::unique_ptr<Function<dim>> distance =
       Shapes::create_signed_distance<dim>(parameters.target.shape);
     const Shapes::PhaseFieldProfile<dim> phase_field(
-      *distance, this->level_prm.model.epsilon);
+      *distance, this->level_parameters.model.epsilon);
     return HuffmanLabeling::labeling_of_function(phase_field,
                                                  target_grid,
                                                  this->mpi_communicator);
@@ -297,7 +301,7 @@ namespace PhaseField
     mismatch_term->add_gradient(state.block(0), 1., gradient);
     // eps M (U - U^{k+1/3}) = -tau G with the lumped mass M
     gradient.scale(this->discretization.get_operators().inverse_lumped_mass);
-    state.block(0).add(-tau / this->level_prm.model.epsilon, gradient);
+    state.block(0).add(-tau / this->level_parameters.model.epsilon, gradient);
     this->discretization.get_constraints().distribute(state.block(0));
   }
 
@@ -361,7 +365,7 @@ namespace PhaseField
                                     const Energies    &energies) const
   {
     const auto m = mismatch(state);
-    return {double(this->level_prm.mesh.finest_level),
+    return {double(this->level_parameters.mesh.finest_level),
             m.energy,
             m.labeling_error,
             total_energy(energies, m.energy)};
@@ -382,7 +386,7 @@ namespace PhaseField
       HuffmanLabeling::labeling(this->discretization.get_dof_handler(),
                                 ghosted_u(this->solution),
                                 centres)};
-    const std::string directory = this->prm.output_directory;
+    const std::string directory = this->willmore_parameters.output_directory;
     const std::string level     = std::to_string(level_number);
     ContourOutput::write_csv(labelings,
                              directory + "/labeling_level_" + level + ".csv",

@@ -33,8 +33,8 @@ namespace PhaseField
   PhaseFieldProblem<dim>::PhaseFieldProblem(
     const WillmoreParameters &parameters,
     const Setup              &setup)
-    : prm(parameters)
-    , level_prm(parameters)
+    : willmore_parameters(parameters)
+    , level_parameters(parameters)
     , setup(setup)
     , mpi_communicator(MPI_COMM_WORLD)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -70,40 +70,42 @@ namespace PhaseField
   void
   PhaseFieldProblem<dim>::run()
   {
-    create_scheme(prm);
-    create_output_directory(prm.output_directory, mpi_communicator);
+    create_scheme(willmore_parameters);
+    create_output_directory(willmore_parameters.output_directory,
+                            mpi_communicator);
     print_header();
     BlockVector start;
-    if (!prm.checkpoint.resume)
+    if (!willmore_parameters.checkpoint.resume)
       {
-        const unsigned int first_level = prm.start_level();
-        if (first_level < prm.mesh.finest_level)
+        const unsigned int first_level = willmore_parameters.start_level();
+        if (first_level < willmore_parameters.mesh.finest_level)
           {
-            level_prm = prm.for_finest_level(first_level);
+            level_parameters =
+              willmore_parameters.for_finest_level(first_level);
             discretization.start_at_level(first_level);
-            create_scheme(level_prm);
+            create_scheme(level_parameters);
           }
         {
           TimerOutput::Scope t(computing_timer, "mesh: initial");
           discretization.create_mesh(setup.signed_distance.get(),
-                                     level_prm.model.epsilon);
+                                     level_parameters.model.epsilon);
         }
         {
           TimerOutput::Scope t(computing_timer, "initialisation");
           initialize_fields();
         }
-        if (first_level < prm.mesh.finest_level)
+        if (first_level < willmore_parameters.mesh.finest_level)
           start = coarse_start_value();
       }
     // the scheme of the finest level exists only now
-    TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(prm,
+    TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(willmore_parameters,
                                                           setup.program_name),
                             discretization,
                             *scheme,
                             *this,
                             pcout,
                             computing_timer);
-    if (prm.checkpoint.resume)
+    if (willmore_parameters.checkpoint.resume)
       time_loop.resume(solution);
     else
       time_loop.run(solution, start.n_blocks() > 0 ? &start : nullptr);
@@ -120,8 +122,8 @@ namespace PhaseField
   {
     BlockVector start     = solution;
     bool        converged = true;
-    for (unsigned int level = level_prm.mesh.finest_level;
-         level < prm.mesh.finest_level;
+    for (unsigned int level = level_parameters.mesh.finest_level;
+         level < willmore_parameters.mesh.finest_level;
          ++level)
       {
         // after a failure the levels are still passed through: the mesh
@@ -147,14 +149,16 @@ namespace PhaseField
   {
     TimerOutput::Scope t(computing_timer, "start value: coarse steps");
     Timer              timer;
-    const double       tau = level_prm.model.step_size(1);
-    pcout << "Start value of step 1 on level " << level_prm.mesh.finest_level
-          << " (h = " << level_prm.mesh.h()
-          << ", epsilon = " << level_prm.model.epsilon << ", tau = " << tau
-          << ", " << discretization.n_dofs() << " DoFs per field)" << std::endl;
-    scheme->prepare_step(start, level_prm.model.tau, tau);
+    const double       tau = level_parameters.model.step_size(1);
+    pcout << "Start value of step 1 on level "
+          << level_parameters.mesh.finest_level
+          << " (h = " << level_parameters.mesh.h()
+          << ", epsilon = " << level_parameters.model.epsilon
+          << ", tau = " << tau << ", " << discretization.n_dofs()
+          << " DoFs per field)" << std::endl;
+    scheme->prepare_step(start, level_parameters.model.tau, tau);
     const StepReport report = this->advance(*scheme, solution, start, tau);
-    pcout << "  level " << level_prm.mesh.finest_level << ": "
+    pcout << "  level " << level_parameters.mesh.finest_level << ": "
           << report.newton_iterations << " Newton, " << report.linear_iterations
           << " linear iterations, " << timer.wall_time() << " s"
           << (report.converged ? "" : ", not converged") << std::endl;
@@ -169,21 +173,21 @@ namespace PhaseField
                                               BlockVector       &start)
   {
     TimerOutput::Scope t(computing_timer, "start value: level transition");
-    const WillmoreParameters next = prm.for_finest_level(level);
-    const double ratio = level_prm.model.epsilon / next.model.epsilon;
+    const WillmoreParameters next = willmore_parameters.for_finest_level(level);
+    const double ratio = level_parameters.model.epsilon / next.model.epsilon;
     // the band of the sharpened profile (see ContourProblem::move_to_level())
     discretization.refine_to_level(level, start, 1 / ratio);
-    level_prm = next;
+    level_parameters = next;
     // the mesh of the step resolves the initial data too
     discretization.reinit(solution, scheme->n_fields());
     interpolate_initial_u(solution.block(0));
     discretization.refine_to_band({&solution, &start});
     sharpen_profile(start.block(0), ratio);
-    create_scheme(level_prm);
+    create_scheme(level_parameters);
     initialize_fields();
     this->after_remesh(start);
     discretization.distribute_constraints(start);
-    scheme->initialize(start, level_prm.model.tau);
+    scheme->initialize(start, level_parameters.model.tau);
   }
 
 
@@ -193,10 +197,11 @@ namespace PhaseField
   PhaseFieldProblem<dim>::print_header() const
   {
     pcout << setup.program_name << ": " << dim << "D, " << scheme->name()
-          << " scheme, shape <" << prm.geometry.shape
-          << ">, h = " << prm.mesh.h() << ", epsilon = " << prm.model.epsilon
-          << ", tau = " << prm.model.tau
-          << ", inner tau = " << prm.model.inner_tau << ", "
+          << " scheme, shape <" << willmore_parameters.geometry.shape
+          << ">, h = " << willmore_parameters.mesh.h()
+          << ", epsilon = " << willmore_parameters.model.epsilon
+          << ", tau = " << willmore_parameters.model.tau
+          << ", inner tau = " << willmore_parameters.model.inner_tau << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI rank(s), " << scheme->linear_solver_description()
           << " linear solver" << std::endl;
@@ -212,7 +217,7 @@ namespace PhaseField
   {
     discretization.reinit(solution, scheme->n_fields());
     interpolate_initial_u(solution.block(0));
-    scheme->initialize(solution, level_prm.model.tau);
+    scheme->initialize(solution, level_parameters.model.tau);
   }
 
 
@@ -222,7 +227,7 @@ namespace PhaseField
   PhaseFieldProblem<dim>::interpolate_initial_u(Vector &u) const
   {
     const Shapes::PhaseFieldProfile<dim> u0(*setup.signed_distance,
-                                            level_prm.model.epsilon);
+                                            level_parameters.model.epsilon);
     discretization.interpolate(u0, u);
   }
 

@@ -91,7 +91,7 @@ namespace PhaseField
     fixed_u_dofs.set_size(dof_handler.n_dofs());
     initial_u.reinit(operators.locally_owned_dofs, mpi_communicator);
     const Shapes::PhaseFieldProfile<2> u0(*setup.signed_distance,
-                                          level_prm.model.epsilon);
+                                          level_parameters.model.epsilon);
     discretization.interpolate(u0, initial_u);
     discretization.get_constraints().distribute(initial_u);
     std::map<types::global_dof_index, Point<2>> support_points;
@@ -174,12 +174,12 @@ namespace PhaseField
     run_on_root(mpi_communicator, [&]() {
       // the initial data is a function: sample it directly
       const Shapes::PhaseFieldProfile<2> u0(*setup.signed_distance,
-                                            prm.model.epsilon);
+                                            willmore_parameters.model.epsilon);
       std::vector<double>                initial(n * n);
       for (unsigned int j = 0; j < n; ++j)
         for (unsigned int i = 0; i < n; ++i)
           initial[j * n + i] = u0.value(Point<2>((i + 0.5) / n, (j + 0.5) / n));
-      const std::string &directory = prm.output_directory;
+      const std::string &directory = willmore_parameters.output_directory;
       const Box2D       &region    = restoration.region;
       Images::write_picture(initial, n, region, directory + "/initial.png");
       Images::write_picture(restored, n, region, directory + "/restored.png");

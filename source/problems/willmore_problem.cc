@@ -52,13 +52,14 @@ namespace PhaseField
   WillmoreProblem<dim>::l2_error(const BlockVector &state,
                                  const double       time) const
   {
-    const WillmoreParameters &prm = this->prm;
-    const double radius = Shapes::exact_radius(prm.geometry, dim, time);
+    const WillmoreParameters &parameters = this->willmore_parameters;
+    const double radius = Shapes::exact_radius(parameters.geometry, dim, time);
     if (radius < 0)
       return std::numeric_limits<double>::quiet_NaN();
     const Shapes::SphereDistance<dim> distance(
-      Shapes::shape_center<dim>(prm.geometry), radius);
-    const Shapes::PhaseFieldProfile<dim> exact(distance, prm.model.epsilon);
+      Shapes::shape_center<dim>(parameters.geometry), radius);
+    const Shapes::PhaseFieldProfile<dim> exact(distance,
+                                               parameters.model.epsilon);
     return this->discretization.error(state.block(0),
                                       exact,
                                       dealii::VectorTools::L2_norm);

@@ -234,10 +234,7 @@ namespace PhaseField
     state = start;
     NewtonControl descent_control(control);
     descent_control.max_iterations = settings.newton.max_descent_iterations;
-    StepReport descent = descent_solve(step, state, descent_control);
-    descent.newton_iterations += newton.newton_iterations;
-    descent.linear_iterations += newton.linear_iterations;
-    return descent;
+    return combine(newton, descent_solve(step, state, descent_control));
   }
 
 

@@ -134,7 +134,7 @@ namespace PhaseField
     void
     compute_errors(const double time, BiharmonicLevelResult &result);
 
-    const BiharmonicParameters               &prm;
+    const BiharmonicParameters               &biharmonic_parameters;
     const unsigned int                        level;
     const double                              h;
     const BiharmonicTimeParameters::StepSizes step_sizes;

@@ -88,7 +88,7 @@ namespace PhaseField
 
     /**
      * Nested iteration for the first step (`Time stepping / Coarse start
-     * level`): from the mesh and initial fields of level_prm, the level
+     * level`): from the mesh and initial fields of level_parameters, the level
      * WillmoreParameters::start_level(), compute step 1 there, carry its
      * result to the next finer level (refine the narrow band of the result
      * and of the initial data there, sharpen the profile to the finer
@@ -96,7 +96,7 @@ namespace PhaseField
      * level - 1. Returns the start value of step 1 on Finest level, or an
      * empty vector if a coarse step did not converge (step 1 then starts
      * from the initial data). The mesh, the initial fields, the scheme and
-     * level_prm are then those of Finest level. The step on Finest level
+     * level_parameters are then those of Finest level. The step on Finest level
      * is the same step: only the start of its iteration changes. A
      * minimiser found on a coarser level is close to the fine one where
      * the coarse epsilon is small against the distance the interface
@@ -105,7 +105,7 @@ namespace PhaseField
     BlockVector
     coarse_start_value();
 
-    /** U = tanh(d/eps) at the nodes, with the epsilon of level_prm. */
+    /** U = tanh(d/eps) at the nodes, with the epsilon of level_parameters. */
     void
     interpolate_initial_u(Vector &u) const;
 
@@ -117,12 +117,12 @@ namespace PhaseField
     static void
     sharpen_profile(Vector &u, const double ratio);
 
-    const WillmoreParameters &prm;
+    const WillmoreParameters &willmore_parameters;
     /**
-     * The parameters of the level the fields are on: prm, or a coarser
-     * level (coarse_start_value(), shape from contour's schedule).
+     * The parameters of the level the fields are on: willmore_parameters, or a
+     * coarser level (coarse_start_value(), shape from contour's schedule).
      */
-    WillmoreParameters         level_prm;
+    WillmoreParameters         level_parameters;
     const Setup                setup;
     const MPI_Comm             mpi_communicator;
     dealii::ConditionalOStream pcout;
@@ -134,7 +134,7 @@ namespace PhaseField
 
   private:
     /**
-     * Step 1 on the level of level_prm from the initial fields into
+     * Step 1 on the level of level_parameters from the initial fields into
      * @p start (which holds the start value). Returns whether it
      * converged.
      */
