@@ -578,9 +578,7 @@ namespace PhaseField
              "this run has inner tau = "
           << settings.model.inner_tau
           << ", epsilon = " << settings.model.epsilon
-          << ") and <Phase field / Epsilon>; the step is retried with a "
-             "smaller tau."
-          << std::endl;
+          << ") and <Phase field / Epsilon>." << std::endl;
   }
 
 

@@ -3,8 +3,9 @@
 # SIGTERM stops a run at the next step boundary on all ranks
 # (doc/willmore_flow.md, "Output"): willmore_flow (quarter circle at
 # level 5, 400 steps, checkpoints every 1000 steps, i.e. none due) gets
-# SIGTERM once statistics.csv has 4 rows (on 2 ranks mpirun gets it and
-# passes it on). It must exit with status 1 within 60 s, say after which
+# SIGTERM once statistics.csv has 4 rows (on 2 ranks one of the ranks
+# gets it, not mpirun, which would kill the ranks 1 s later and stop
+# relaying their output: the other rank must stop at the same step). It must exit with status 1 within 60 s, say after which
 # step k it stopped, write the checkpoint of step k although none was due,
 # and a resume up to step k + 1 must continue from it.
 ranks="$1"; mpiexec="$2"; program="$3"; work="$4"
@@ -23,14 +24,16 @@ else
     --set "Time stepping/Number of steps=400" > "$work/run.log" 2>&1 &
 fi
 job=$!
-# the child of timeout: the program or mpirun
+# the child of timeout: the program, or mpirun with the ranks as children
 for i in $(seq 1 600); do
-  child=$(pgrep -P $job | head -1)
+  target=$(pgrep -P $job | head -1)
+  [ "$ranks" -gt 1 ] && [ -n "$target" ] &&
+    target=$(pgrep -P "$target" | tail -1)
   rows=$(cat "$work/run/statistics.csv" 2>/dev/null | wc -l)
-  [ -n "$child" ] && [ "$rows" -ge 5 ] && break
+  [ -n "$target" ] && [ "$rows" -ge 5 ] && break
   sleep 0.1
 done
-kill -TERM "$child"
+kill -TERM "$target"
 wait $job
 status=$?
 output=$(cat "$work/run.log")
