@@ -105,7 +105,7 @@ namespace PhaseField
       {"Mesh / Coarsest level", std::to_string(parameters.mesh.coarsest_level)},
       {"Mesh / Adaptive", parameters.mesh.adaptive ? "true" : "false"},
       {"Phase field / Epsilon", exact(parameters.model.epsilon)},
-      {"Time stepping / Scheme", scheme_name(parameters.model.scheme)},
+      {"Time stepping / Scheme", parameters.model.scheme.name},
       {"Time stepping / Inner tau", exact(parameters.model.inner_tau)}};
     return s;
   }
