@@ -63,8 +63,6 @@ namespace
   class ToyScheme : public TimeSteppingScheme<dim>
   {
   public:
-    using typename TimeSteppingScheme<dim>::Vector;
-    using typename TimeSteppingScheme<dim>::BlockVector;
 
     ToyScheme(const SchemeSettings             &settings,
               const Discretization<dim>        &discretization,
