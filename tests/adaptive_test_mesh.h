@@ -4,6 +4,7 @@
 #ifndef phasefield_tests_adaptive_test_mesh_h
 #define phasefield_tests_adaptive_test_mesh_h
 
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/geometry/shapes.h>
@@ -60,6 +61,19 @@ namespace Testing
     const dealii::AffineConstraints<double>      &constraints;
     const PhaseField::LumpedOperators<dim>       &operators;
   };
+  /**
+   * v_i = amplitude sin(frequency i + 0.3) at every locally owned DoF i: a
+   * smooth deterministic field, the same on every number of ranks.
+   */
+  inline void
+  fill_smoothly(dealii::TrilinosWrappers::MPI::Vector &v,
+                const double                           amplitude,
+                const double                           frequency)
+  {
+    for (const auto i : v.locally_owned_elements())
+      v(i) = amplitude * std::sin(frequency * i + 0.3);
+    v.compress(dealii::VectorOperation::insert);
+  }
 } // namespace Testing
 
 #endif

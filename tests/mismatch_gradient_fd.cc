@@ -21,39 +21,28 @@ namespace
 {
   constexpr double gamma_weight = 10;
 
-  /** A smooth deterministic field of DoF indices (rank independent). */
-  void
-  fill(TrilinosWrappers::MPI::Vector &v,
-       const double                   amplitude,
-       const double                   frequency)
-  {
-    for (const auto i : v.locally_owned_elements())
-      v(i) = amplitude * std::sin(frequency * i + 0.3);
-    v.compress(VectorOperation::insert);
-  }
-
   template <int dim>
   void
   check()
   {
-    const Testing::AdaptiveTestMesh<dim> mesh;
-    const auto                          &ops = mesh.operators;
-    const MPI_Comm                       comm = MPI_COMM_WORLD;
+    const Testing::AdaptiveTestMesh<dim>     mesh;
+    const auto                              &ops  = mesh.operators;
+    const MPI_Comm                           comm = MPI_COMM_WORLD;
     const HuffmanLabeling::LabelingGrid<dim> grid(
       mesh.discretization.get_settings().mesh.finest_level);
     Point<dim> c;
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = 0.5;
     const Shapes::SphereDistance<dim> target_sphere(c, 0.25);
-    const std::vector<double>         target =
-      HuffmanLabeling::labeling_of_function(
-        Shapes::PhaseFieldProfile<dim>(target_sphere, mesh.eps), grid, comm);
+    const std::vector<double> target = HuffmanLabeling::labeling_of_function(
+      Shapes::PhaseFieldProfile<dim>(target_sphere, mesh.eps), grid, comm);
 
     TrilinosWrappers::MPI::Vector u(ops.locally_owned_dofs, comm);
-    mesh.discretization.interpolate(
-      Shapes::PhaseFieldProfile<dim>(mesh.sphere, mesh.eps), u);
+    mesh.discretization.interpolate(Shapes::PhaseFieldProfile<dim>(mesh.sphere,
+                                                                   mesh.eps),
+                                    u);
     TrilinosWrappers::MPI::Vector perturbation(u);
-    fill(perturbation, 0.05, 1.7);
+    Testing::fill_smoothly(perturbation, 0.05, 1.7);
     u += perturbation;
     mesh.constraints.distribute(u);
 
@@ -84,16 +73,16 @@ namespace
 
     // (the narrow band, so the DoF count, can differ with the partition)
     Testing::log() << dim << "D, pixel grid " << grid.pixels_per_direction()
-                   << "^" << dim - 1
-                   << ", hanging nodes: " << (mesh.constraints.n_constraints() > 0)
+                   << "^" << dim - 1 << ", hanging nodes: "
+                   << (mesh.constraints.n_constraints() > 0)
                    << ", j > 0.5: " << (j(u) > 0.5) << std::endl;
     for (const double frequency : {0.37, 2.9})
       {
         TrilinosWrappers::MPI::Vector direction(u);
-        fill(direction, 1, frequency);
+        Testing::fill_smoothly(direction, 1, frequency);
         mesh.constraints.set_zero(direction);
         mesh.constraints.distribute(direction);
-        constexpr double step = 1e-6;
+        constexpr double              step = 1e-6;
         TrilinosWrappers::MPI::Vector plus(u), minus(u);
         plus.add(step, direction);
         minus.add(-step, direction);

@@ -23,17 +23,6 @@ namespace
   constexpr double gamma_weight = 10;
   constexpr double step         = 1e-6;
 
-  /** A smooth deterministic field of DoF indices (rank independent). */
-  void
-  fill(TrilinosWrappers::MPI::Vector &v,
-       const double                   amplitude,
-       const double                   frequency)
-  {
-    for (const auto i : v.locally_owned_elements())
-      v(i) = amplitude * std::sin(frequency * i + 0.3);
-    v.compress(VectorOperation::insert);
-  }
-
   template <int dim>
   void
   check()
@@ -60,7 +49,7 @@ namespace
                                                                    mesh.eps),
                                     u);
     TrilinosWrappers::MPI::Vector perturbation(u);
-    fill(perturbation, 0.05, 1.7);
+    Testing::fill_smoothly(perturbation, 0.05, 1.7);
     u += perturbation;
     mesh.constraints.distribute(u);
 
@@ -73,7 +62,7 @@ namespace
     };
     const auto direction = [&](const double frequency) {
       TrilinosWrappers::MPI::Vector d(u);
-      fill(d, 1, frequency);
+      Testing::fill_smoothly(d, 1, frequency);
       mesh.constraints.set_zero(d);
       mesh.constraints.distribute(d);
       return d;

@@ -133,9 +133,8 @@ namespace PhaseField
   {
     Vector difference(z.block(Field::V));
     difference -= z.block(Field::U);
-    return std::sqrt(ops.mass_product(z.block(Field::U), z.block(Field::U))) +
-           weights.a * std::sqrt(ops.mass_product(difference, difference)) +
-           std::sqrt(ops.mass_product(z.block(Field::P), z.block(Field::P)));
+    return mass_norm(z.block(Field::U)) + weights.a * mass_norm(difference) +
+           mass_norm(z.block(Field::P));
   }
 
 
@@ -144,13 +143,10 @@ namespace PhaseField
   double
   NestedPhysics<dim>::roundoff_level(const BlockVector &z) const
   {
-    const auto norm = [this](const Vector &x) {
-      return std::sqrt(ops.mass_product(x, x));
-    };
-    const double u = norm(z.block(Field::U));
+    const double u = mass_norm(z.block(Field::U));
     return std::numeric_limits<double>::epsilon() *
-           (u + weights.a * (u + norm(z.block(Field::V))) +
-            norm(z.block(Field::P)));
+           (u + weights.a * (u + mass_norm(z.block(Field::V))) +
+            mass_norm(z.block(Field::P)));
   }
 
 
