@@ -57,7 +57,7 @@ for tau in 0.000488 0.000244; do
     "step 2: the solver of the nested scheme did not converge, retrying with half the time step, tau = $tau" ||
     fail "no retry of step 2 with tau = $tau"
 done
-printf '%s\n' "$output" | grep -q "did not converge in step 2 even after halving the time step 2 times" ||
+printf '%s\n' "$output" | grep -q "Step 2: the solver of the nested scheme did not converge even after halving the time step 2 times" ||
   fail "no final message naming step 2 and the 2 halvings"
 rows=$(wc -l < "$directory/statistics.csv")
 [ "$rows" -eq 3 ] ||

@@ -14,9 +14,8 @@
 #include <cmath>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_precondition.h>
+#include <phasefield/mesh/algebraic_multigrid.h>
 #include <phasefield/mesh/stiffness_plus_diagonal.h>
-#include <phasefield/solvers/product_form.h>
 #include <vector>
 
 using namespace dealii;
@@ -57,9 +56,9 @@ namespace
 
   /** CG iterations for @p matrix x = @p b to 1e-8 with @p amg. */
   unsigned int
-  cg_iterations(const TrilinosWrappers::SparseMatrix    &matrix,
-                const TrilinosWrappers::PreconditionAMG &amg,
-                const TVector                           &b)
+  cg_iterations(const TrilinosWrappers::SparseMatrix &matrix,
+                const MultigridCycle                 &amg,
+                const TVector                        &b)
   {
     SolverControl     control(200, 1e-8 * b.l2_norm());
     SolverCG<TVector> cg(control);
@@ -137,11 +136,10 @@ check()
     << '\n';
 
   // ML set up from the operator and from the matrix
-  TrilinosWrappers::PreconditionAMG amg_op, amg_matrix;
-  initialize_multigrid(amg_op, rows);
-  initialize_multigrid(amg_matrix, epetra_matrix);
-  const unsigned int its_op     = cg_iterations(matrix, amg_op, x);
-  const unsigned int its_matrix = cg_iterations(matrix, amg_matrix, x);
+  const auto amg_op = op->make_multigrid(nullptr, multigrid_smoother_sweeps);
+  const AlgebraicMultigrid amg_matrix(epetra_matrix);
+  const unsigned int       its_op     = cg_iterations(matrix, *amg_op, x);
+  const unsigned int       its_matrix = cg_iterations(matrix, amg_matrix, x);
   Testing::log() << "    CG + AMG of the operator: the iterations of AMG of "
                     "the matrix: "
                  << yes(its_op == its_matrix && its_op > 0) << '\n';

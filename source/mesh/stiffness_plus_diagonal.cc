@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <phasefield/mesh/algebraic_multigrid.h>
 #include <phasefield/mesh/stiffness_plus_diagonal.h>
 #include <vector>
 
@@ -43,6 +44,18 @@ namespace PhaseField
   StiffnessPlusDiagonal::m() const
   {
     return stiffness == nullptr ? 0 : stiffness->m();
+  }
+
+
+
+  std::unique_ptr<MultigridCycle>
+  StiffnessPlusDiagonal::make_multigrid(
+    const Vector      *slow_mode,
+    const unsigned int smoother_sweeps) const
+  {
+    return std::make_unique<AlgebraicMultigrid>(*this,
+                                                slow_mode,
+                                                smoother_sweeps);
   }
 
 

@@ -564,8 +564,11 @@ namespace PhaseField
   void
   AugmentedLagrangianScheme<dim>::before_remesh()
   {
-    // nothing: the penalty carries over re-meshing, and the Schur
-    // preconditioner is set up anew in every trust-region iteration
+    // the penalty carries over re-meshing, and the Schur preconditioner
+    // is set up anew in every trust-region iteration; a direct solver
+    // forgets the factorisation (and analysis) of the old mesh
+    if (schur_solver)
+      schur_solver->reset();
   }
 
 
@@ -592,6 +595,8 @@ namespace PhaseField
   AugmentedLagrangianScheme<dim>::reset_solver()
   {
     next_penalty = parameters.initial_penalty;
+    if (schur_solver)
+      schur_solver->reset();
   }
 
 
@@ -618,9 +623,9 @@ namespace PhaseField
   template <int dim>
   double
   AugmentedLagrangianScheme<dim>::energy_law_energy(
-    const BlockVector &state) const
+    const Energies &energies) const
   {
-    return model.energy_law_energy(state);
+    return model.energy_law_energy(energies);
   }
 
 

@@ -314,9 +314,9 @@ namespace PhaseField
 
   template <int dim>
   double
-  NestedScheme<dim>::energy_law_energy(const BlockVector &state) const
+  NestedScheme<dim>::energy_law_energy(const Energies &energies) const
   {
-    return model.energy_law_energy(state);
+    return model.energy_law_energy(energies);
   }
 
 

@@ -2,7 +2,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
-#include <deal.II/lac/trilinos_precondition.h>
+#include <phasefield/mesh/algebraic_multigrid.h>
 #include <phasefield/solvers/linear_solver.h>
 #include <phasefield/solvers/product_form.h>
 
@@ -82,7 +82,7 @@ namespace PhaseField
         return last_iterations;
       }
     return solve_with_multigrid(matrix,
-                                matrix.trilinos_matrix(),
+                                AlgebraicMultigrid(matrix.trilinos_matrix()),
                                 solution,
                                 rhs);
   }
@@ -97,32 +97,34 @@ namespace PhaseField
     AssertThrow(solver_type == LinearSolverType::iterative,
                 ExcMessage("A direct solver needs the matrix, not an "
                            "operator."));
-    return solve_with_multigrid(op, multigrid_rows(op), solution, rhs);
+    return solve_with_multigrid(op,
+                                *op.make_multigrid(nullptr,
+                                                   multigrid_smoother_sweeps),
+                                solution,
+                                rhs);
   }
 
 
 
   template <typename Operator>
   unsigned int
-  LinearSolver::solve_with_multigrid(const Operator         &op,
-                                     const Epetra_RowMatrix &rows,
-                                     Vector                 &solution,
-                                     const Vector           &rhs)
+  LinearSolver::solve_with_multigrid(const Operator       &op,
+                                     const MultigridCycle &multigrid,
+                                     Vector               &solution,
+                                     const Vector         &rhs)
   {
     SolverControl control(max_iterations,
                           tolerance * rhs.l2_norm(),
                           false,
                           false);
     solution = 0;
-    TrilinosWrappers::PreconditionAMG amg;
-    initialize_multigrid(amg, rows);
     if (symmetric)
       {
         SolverCG<Vector> cg(control);
-        cg.solve(op, solution, rhs, amg);
+        cg.solve(op, solution, rhs, multigrid);
       }
     else
-      gmres_solve(op, solution, rhs, amg, control);
+      gmres_solve(op, solution, rhs, multigrid, control);
     last_iterations = control.last_step();
     return last_iterations;
   }

@@ -197,6 +197,99 @@ namespace PhaseField
                               norm >= 0.5 * previous_norm;
       return norm <= target || stagnating;
     }
+
+
+    /**
+     * Solve for the @p update of Newton iteration @p it at @p z with
+     * @p residual; adds the linear iterations to @p report. False (and the
+     * failure printed) if the linear solver failed: a Krylov solve is
+     * collective, so it fails on all ranks.
+     */
+    bool
+    solve_for_update(NonlinearSystem          &system,
+                     const BlockVector        &z,
+                     const BlockVector        &residual,
+                     BlockVector              &update,
+                     LinearSolver             &linear_solver,
+                     const ConditionalOStream &pcout,
+                     const unsigned int        it,
+                     StepReport               &report)
+    {
+      try
+        {
+          report.linear_iterations +=
+            system.solve_jacobian(z, residual, update, linear_solver);
+          report.newton_iterations = it;
+          return true;
+        }
+      catch (const ExceptionBase &exc)
+        {
+          internal::print_linear_solver_failure(pcout, it, exc);
+          return false;
+        }
+    }
+
+
+
+    /** The iterate of newton_solve() and its work vectors. */
+    struct Iterate
+    {
+      NonlinearSystem     &system;
+      const NewtonControl &control;
+      BlockVector         &z;
+      BlockVector          residual;
+      BlockVector          update;
+      BlockVector          trial;
+      /** The residual norm at z. */
+      double norm = 0;
+      /** The residual norm to reach. */
+      double target = 0;
+
+      /** backtrack() along update from z. */
+      Backtracking
+      search(const bool may_relax)
+      {
+        return backtrack(
+          system, z, update, trial, residual, control, norm, target, may_relax);
+      }
+    };
+
+
+
+    /**
+     * The watchdog's part of Newton iteration @p it after the line search
+     * found @p step: a full update that raised the norm starts a trial
+     * (the relaxed step: returns true); after a trial that failed, the
+     * iterate returns to the trial's start, and its update is backtracked
+     * as usual into @p step.
+     */
+    bool
+    watch(Watchdog                 &watchdog,
+          Iterate                  &iterate,
+          Backtracking             &step,
+          const ConditionalOStream &pcout,
+          const unsigned int        it)
+    {
+      const NewtonControl &control = iterate.control;
+      // without line search every update is taken: no watchdog
+      const bool relaxed = control.line_search && step.damping == 0 &&
+                           step.norm >= iterate.norm &&
+                           step.norm > iterate.target;
+      if (relaxed)
+        watchdog.start(iterate.z, iterate.update, iterate.norm);
+      const bool failed_trial =
+        (step.damping > control.max_damping_steps && watchdog.in_trial()) ||
+        (!relaxed && watchdog.trial_failed(step.norm));
+      if (failed_trial)
+        {
+          watchdog.restore(iterate.z, iterate.update, iterate.norm);
+          pcout << "    Newton iteration " << it
+                << ": watchdog failed, back to residual " << iterate.norm
+                << std::endl;
+          step = iterate.search(false);
+        }
+      return relaxed;
+    }
   } // namespace
 
 
@@ -209,13 +302,17 @@ namespace PhaseField
                const ConditionalOStream &pcout,
                const bool                verbose)
   {
-    BlockVector residual(z), update(z), trial(z);
-
-    StepReport   report;
-    double       norm   = 0;
-    const double target = internal::start_newton(
-      system, z, residual, control, pcout, verbose, norm, report);
-    if (report.converged || !std::isfinite(norm))
+    Iterate    iterate{system, control, z, z, z, z};
+    StepReport report;
+    iterate.target = internal::start_newton(system,
+                                            z,
+                                            iterate.residual,
+                                            control,
+                                            pcout,
+                                            verbose,
+                                            iterate.norm,
+                                            report);
+    if (report.converged || !std::isfinite(iterate.norm))
       return report;
     const double roundoff_level =
       std::max(control.roundoff_level, system.roundoff_level(z));
@@ -224,75 +321,54 @@ namespace PhaseField
     internal::ForcingTerm forcing;
     for (unsigned int it = 1; it <= control.max_iterations; ++it)
       {
-        forcing.set_tolerance(linear_solver, control, it, target, norm);
-        unsigned int linear_iterations = 0;
-        try
-          {
-            linear_iterations =
-              system.solve_jacobian(z, residual, update, linear_solver);
-          }
-        catch (const ExceptionBase &exc)
-          {
-            // a Krylov solve is collective: it fails on all ranks
-            internal::print_linear_solver_failure(pcout, it, exc);
-            return report;
-          }
-        report.linear_iterations += linear_iterations;
-        report.newton_iterations = it;
-
-        Backtracking step          = backtrack(system,
-                                      z,
-                                      update,
-                                      trial,
-                                      residual,
-                                      control,
-                                      norm,
-                                      target,
-                                      watchdog.may_relax());
-        const double previous_norm = norm;
+        forcing.set_tolerance(
+          linear_solver, control, it, iterate.target, iterate.norm);
+        const unsigned int linear_before = report.linear_iterations;
+        if (!solve_for_update(system,
+                              z,
+                              iterate.residual,
+                              iterate.update,
+                              linear_solver,
+                              pcout,
+                              it,
+                              report))
+          return report;
+        Backtracking step          = iterate.search(watchdog.may_relax());
+        const double previous_norm = iterate.norm;
         // at round-off no update reduces the residual any further: that
         // is convergence as the stagnation in reached_target() is
         if (step.damping > control.max_damping_steps &&
-            reached_target(norm, previous_norm, target, roundoff_level))
+            reached_target(
+              iterate.norm, previous_norm, iterate.target, roundoff_level))
           {
             report.converged           = true;
-            report.final_residual_norm = norm;
+            report.final_residual_norm = iterate.norm;
             return report;
           }
-        // without line search every update is taken: no watchdog
-        const bool relaxed = control.line_search && step.damping == 0 &&
-                             step.norm >= norm && step.norm > target;
-        if (relaxed)
-          watchdog.start(z, update, norm);
-        const bool failed_trial =
-          (step.damping > control.max_damping_steps && watchdog.in_trial()) ||
-          (!relaxed && watchdog.trial_failed(step.norm));
-        if (failed_trial)
-          {
-            watchdog.restore(z, update, norm);
-            pcout << "    Newton iteration " << it
-                  << ": watchdog failed, back to residual " << norm
-                  << std::endl;
-            step = backtrack(
-              system, z, update, trial, residual, control, norm, target, false);
-          }
-        if (!accept_update(step, it, control, pcout, trial, z, norm))
+        const bool relaxed = watch(watchdog, iterate, step, pcout, it);
+        if (!accept_update(
+              step, it, control, pcout, iterate.trial, z, iterate.norm))
           return report;
-        report.final_residual_norm = norm;
+        report.final_residual_norm = iterate.norm;
         if (verbose)
-          pcout << "    Newton " << it << ": residual " << norm << " ("
-                << linear_iterations << " linear iterations, "
-                << linear_solver.n_factorizations() << " factorizations)"
-                << (relaxed ? ", watchdog" : "") << std::endl;
-        if (reached_target(norm, previous_norm, target, roundoff_level))
+          pcout << "    Newton " << it << ": residual " << iterate.norm << " ("
+                << report.linear_iterations - linear_before
+                << " linear iterations, " << linear_solver.n_factorizations()
+                << " factorizations)" << (relaxed ? ", watchdog" : "")
+                << std::endl;
+        if (reached_target(
+              iterate.norm, previous_norm, iterate.target, roundoff_level))
           {
             report.converged = true;
             return report;
           }
-        if (!std::isfinite(norm))
+        if (!std::isfinite(iterate.norm))
           return report;
       }
-    internal::print_newton_failure(pcout, control, norm, target);
+    internal::print_newton_failure(pcout,
+                                   control,
+                                   iterate.norm,
+                                   iterate.target);
     return report;
   }
 

@@ -24,17 +24,17 @@ namespace PhaseField
     }
 
     /**
-     * The message of a step of the scheme @p scheme_name that failed after
-     * @p attempt halvings.
+     * The message of step @p step of the scheme @p scheme_name that failed
+     * (@p failure says why) after @p attempt halvings.
      */
     std::string
-    step_failure_message(const std::string &scheme_name,
+    step_failure_message(const std::string &failure,
+                         const std::string &scheme_name,
                          const unsigned int step,
                          const unsigned int attempt,
                          const double       tau)
     {
-      return "The solver of the " + scheme_name +
-             " scheme did not converge in step " + std::to_string(step) +
+      return "Step " + std::to_string(step) + ": " + failure +
              (attempt == 0 ?
                 std::string(" (retrying with smaller time steps is "
                             "switched off: Newton / Maximum step "
@@ -45,8 +45,10 @@ namespace PhaseField
              "). Try a smaller <Time stepping / Tau> or larger iteration "
              "limits (<Newton / Maximum iterations>, <Linear solver / "
              "Maximum iterations>; for the augmented lagrangian scheme the "
-             "limits in subsection <Augmented Lagrangian>). The statistics "
-             "and output up to the previous step are complete.";
+             "limits in subsection <Augmented Lagrangian>). The " +
+             scheme_name +
+             " scheme's statistics and output up to the previous step are "
+             "complete.";
     }
   } // namespace
 
@@ -81,18 +83,19 @@ namespace PhaseField
                                 const std::string        &program_name)
   {
     Settings s;
-    s.model               = parameters.model;
-    s.max_step_halvings   = parameters.newton.max_step_halvings;
-    s.regrow_step_size    = parameters.newton.regrow_step_size;
-    s.adaptive            = parameters.mesh.adaptive;
-    s.refinement_interval = parameters.mesh.refinement_interval;
-    s.vtu_interval        = parameters.output.vtu_interval;
-    s.verbose             = parameters.output.verbose;
-    s.output_directory    = parameters.output_directory;
-    s.checkpoint_interval = parameters.checkpoint.interval;
-    s.extrapolated_start  = parameters.model.extrapolated_start;
-    s.allowed_changes     = parameters.checkpoint.allowed_changes;
-    const auto exact      = [](const double value) {
+    s.model                    = parameters.model;
+    s.max_step_halvings        = parameters.newton.max_step_halvings;
+    s.max_inside_change_factor = parameters.model.max_inside_change_factor;
+    s.regrow_step_size         = parameters.newton.regrow_step_size;
+    s.adaptive                 = parameters.mesh.adaptive;
+    s.refinement_interval      = parameters.mesh.refinement_interval;
+    s.vtu_interval             = parameters.output.vtu_interval;
+    s.verbose                  = parameters.output.verbose;
+    s.output_directory         = parameters.output_directory;
+    s.checkpoint_interval      = parameters.checkpoint.interval;
+    s.extrapolated_start       = parameters.model.extrapolated_start;
+    s.allowed_changes          = parameters.checkpoint.allowed_changes;
+    const auto exact           = [](const double value) {
       std::ostringstream text;
       text.precision(std::numeric_limits<double>::max_digits10);
       text << value;
@@ -172,7 +175,7 @@ namespace PhaseField
                                          "/statistics.csv",
                                        statistics_columns(),
                                        discretization.get_mpi_communicator());
-    record(0, state, StepReport(), settings.model.tau);
+    record(0, state, energies_of(state), StepReport(), settings.model.tau);
     run_steps(1, state, first_start_value);
   }
 
@@ -221,7 +224,13 @@ namespace PhaseField
                                        statistics_columns(),
                                        discretization.get_mpi_communicator(),
                                        previous_step);
-    record(previous_step, state, StepReport(), settings.model.tau, 0, false);
+    record(previous_step,
+           state,
+           energies_of(state),
+           StepReport(),
+           settings.model.tau,
+           0,
+           false);
     run_steps(previous_step + 1, state);
   }
 
@@ -260,6 +269,7 @@ namespace PhaseField
     step_offset     = saved.step_offset;
     final_step      = saved.finished ? saved.step : step_offset + n_steps;
     client.after_load(state, saved.problem_data);
+    state_energies.reset();
     scheme.reset_solver();
     // the DoFs are in p4est's order now, and a resumed run has no history
     predictor.forget();
@@ -278,35 +288,32 @@ namespace PhaseField
     for (unsigned int step = first_step; step <= final_step; ++step)
       {
         old_state              = state;
+        old_energies           = energies_of(state);
         const double tried_tau = first_step_size(step);
         Attempt      attempt{tried_tau, false};
         if (step == first_step && first_start_value != nullptr)
           state = *first_start_value;
         else
           attempt = predict_start_value(step, state, tried_tau);
-        const auto [report, tau] =
+        const StepResult result =
           advance_on_resolving_mesh(step, state, attempt);
+        const double tau = result.tau;
         if (extrapolates())
           predictor.record(old_state, state, tau, scheme.start_extrapolation());
         if (settings.regrow_step_size)
           step_size_limit = tau < tried_tau ? tau : 2 * tau;
-        // on the mesh of the step, which the step may have refined
-        if (scheme.has_energy_law() && client.energy_law_applies())
-          check_energy_law(step,
-                           state,
-                           scheme.energy_law_energy(old_state),
-                           tau);
         state_tau = tau;
         time += tau;
         last_step = step;
         // tau = tried_tau / 2^halvings exactly
         const auto halvings =
           static_cast<unsigned int>(std::lround(std::log2(tried_tau / tau)));
-        const Energies energies = record(step, state, report, tau, halvings);
+        record(step, state, result.energies, result.report, tau, halvings);
         // asked after every step, the last one too: the client may keep
         // a history that a checkpoint of this step holds
-        const bool client_finished = client.finished(step, state, energies);
-        const bool finished        = step == final_step || client_finished;
+        const bool client_finished =
+          client.finished(step, state, result.energies);
+        const bool finished = step == final_step || client_finished;
         // a checkpoint holds the start of the next step: after the last
         // step too, the mesh is adapted for it
         const bool checkpoint = checkpoints > 0 && step % checkpoints == 0;
@@ -431,12 +438,12 @@ namespace PhaseField
 
 
   template <int dim>
-  std::pair<StepReport, double>
+  typename TimeLoop<dim>::StepResult
   TimeLoop<dim>::advance_on_resolving_mesh(const unsigned int step,
                                            BlockVector       &state,
                                            const Attempt      attempt)
   {
-    auto [report, tau] = advance_with_halving(step, state, state_tau, attempt);
+    StepResult result = advance_with_halving(step, state, state_tau, attempt);
     for (unsigned int repetition = 1;
          settings.adaptive && client.repeats_unresolved_steps() &&
          !discretization.resolves_band(state);
@@ -456,13 +463,15 @@ namespace PhaseField
               << ": the interface left the band of finest cells; "
                  "repeating the step on the mesh refined there"
               << std::endl;
-        refine_to_band(state, tau);
-        const auto repeated =
-          advance_with_halving(step, state, tau, Attempt{tau, false});
-        report = combine(report, repeated.first);
-        tau    = repeated.second;
+        refine_to_band(state, result.tau);
+        StepResult repeated = advance_with_halving(step,
+                                                   state,
+                                                   result.tau,
+                                                   Attempt{result.tau, false});
+        repeated.report     = combine(result.report, repeated.report);
+        result              = repeated;
       }
-    return {report, tau};
+    return result;
   }
 
 
@@ -479,6 +488,8 @@ namespace PhaseField
     // (the semi-implicit scheme's F(U^k))
     restore_after_transfer(state, tau);
     restore_after_transfer(old_state, state_tau);
+    // the start of the step on the mesh of the step
+    old_energies = scheme.energies(old_state);
   }
 
 
@@ -517,7 +528,7 @@ namespace PhaseField
 
 
   template <int dim>
-  std::pair<StepReport, double>
+  typename TimeLoop<dim>::StepResult
   TimeLoop<dim>::advance_with_halving(const unsigned int step,
                                       BlockVector       &state,
                                       const double       start_tau,
@@ -533,33 +544,38 @@ namespace PhaseField
         const StepReport report = client.advance(scheme, old_state, state, tau);
         const bool       from_extrapolation = attempt.from_extrapolation;
         attempt.from_extrapolation          = false;
+        std::string failure =
+          "the solver of the " + scheme.name() + " scheme did not converge";
         if (report.converged)
-          return {report, tau};
+          {
+            const Energies energies = scheme.energies(state);
+            failure                 = rejection(state, energies, tau);
+            if (failure.empty())
+              return {report, tau, energies};
+          }
         if (from_extrapolation)
           {
             // the extrapolation is for this tau: the same step from the
             // last result (old_state), then halvings from there
             saved = old_state;
             state = old_state;
-            pcout << "  step " << step << ": the solver of the "
-                  << scheme.name()
-                  << " scheme did not converge from the extrapolated start, "
-                     "retrying from the last result"
+            pcout << "  step " << step << ": " << failure
+                  << " from the extrapolated start, retrying from the last "
+                     "result"
                   << std::endl;
             continue;
           }
         state = saved;
         if (!std::isfinite(report.final_residual_norm))
           non_finite_residual_message(step, tau);
-        AssertThrow(
-          halvings < settings.max_step_halvings,
-          ExcMessage(step_failure_message(scheme.name(), step, halvings, tau)));
+        AssertThrow(halvings < settings.max_step_halvings,
+                    ExcMessage(step_failure_message(
+                      failure, scheme.name(), step, halvings, tau)));
         ++halvings;
         tau *= 0.5;
-        pcout << "  step " << step << ": the solver of the " << scheme.name()
-              << " scheme did not converge, retrying with half the time "
-                 "step, tau = "
-              << tau << std::endl;
+        pcout << "  step " << step << ": " << failure
+              << ", retrying with half the time step, tau = " << tau
+              << std::endl;
       }
   }
 
@@ -584,29 +600,52 @@ namespace PhaseField
 
 
   template <int dim>
-  void
-  TimeLoop<dim>::check_energy_law(const unsigned int step,
-                                  const BlockVector &state,
-                                  const double       energy_before,
-                                  const double       tau) const
+  std::string
+  TimeLoop<dim>::rejection(const BlockVector &state,
+                           const Energies    &energies,
+                           const double       tau) const
   {
-    const double rise = scheme.energy_law_energy(state) +
-                        scheme.dissipation(old_state, state, tau) -
-                        energy_before;
-    if (settings.verbose)
-      pcout << "  energy + dissipation - energy before the step: "
-            << std::setprecision(4) << rise << std::endl;
-    // round-off of the energies relative to their size (the curvature
-    // (U - V) / ttau loses about log10(1/ttau) digits)
-    constexpr double energy_roundoff = 1e-10;
-    if (rise > energy_roundoff * std::abs(energy_before))
-      pcout << "  Warning: step " << step
-            << ": energy + dissipation exceeds the energy before the "
-               "step by "
-            << std::setprecision(4) << rise
-            << " (thesis Cor. 3.3 holds for the minimiser of the "
-               "outer energy, Newton found another critical point)"
-            << std::endl;
+    std::ostringstream why;
+    why << std::setprecision(4);
+    if (scheme.has_energy_law() && client.energy_law_applies())
+      {
+        const double before = scheme.energy_law_energy(old_energies);
+        const double rise   = scheme.energy_law_energy(energies) +
+                            scheme.dissipation(old_state, state, tau) - before;
+        if (settings.verbose)
+          pcout << "  energy + dissipation - energy before the step: "
+                << std::setprecision(4) << rise << std::endl;
+        if (rise > scheme.energy_law_tolerance() * std::abs(before))
+          {
+            why << "energy + dissipation exceeds the energy before the step "
+                   "by "
+                << rise
+                << " (thesis Cor. 3.3 holds for the minimiser of the outer "
+                   "energy: the solver found another critical point)";
+            return why.str();
+          }
+      }
+    const double inside_before = old_energies.inside_measure;
+    const double inside_after  = energies.inside_measure;
+    const double factor        = settings.max_inside_change_factor;
+    if (factor > 0 && inside_before > 0 &&
+        (inside_after > factor * inside_before ||
+         inside_after * factor < inside_before))
+      why << "the inside measure changed from " << inside_before << " to "
+          << inside_after
+          << ", by more than the factor <Time stepping / Largest inside "
+             "change factor> = "
+          << factor << " (the solver jumped to another branch)";
+    return why.str();
+  }
+
+
+
+  template <int dim>
+  Energies
+  TimeLoop<dim>::energies_of(const BlockVector &state) const
+  {
+    return state_energies ? *state_energies : scheme.energies(state);
   }
 
 
@@ -617,17 +656,20 @@ namespace PhaseField
   {
     TimerOutput::Scope t(timer, "mesh: adapt");
     const bool   report_energy = settings.verbose && scheme.has_energy_law();
-    const double before = report_energy ? scheme.energy_law_energy(state) : 0.;
+    const double before =
+      report_energy ? scheme.energy_law_energy(energies_of(state)) : 0.;
     if (!discretization.adapt_to_phase_field(with_history({&state}), 1., true))
       return;
     distribute_history_constraints();
     discretization.reinit(old_state, state.n_blocks());
     restore_after_transfer(state, state_tau);
+    state_energies.reset();
     if (report_energy)
       {
+        state_energies       = scheme.energies(state);
         const auto precision = pcout.get_stream().precision(10);
         pcout << "  re-meshing: energy " << before << " -> "
-              << scheme.energy_law_energy(state) << std::endl;
+              << scheme.energy_law_energy(*state_energies) << std::endl;
         pcout.get_stream().precision(precision);
       }
   }
@@ -635,18 +677,19 @@ namespace PhaseField
 
 
   template <int dim>
-  Energies
+  void
   TimeLoop<dim>::record(const unsigned int step,
                         const BlockVector &state,
+                        const Energies    &e,
                         const StepReport  &report,
                         const double       tau,
                         const unsigned int halvings,
                         const bool         with_output)
   {
-    const Energies e     = scheme.energies(state);
-    const double   error = client.l2_error(state, time);
-    const double   dofs  = double(scheme.n_fields()) * discretization.n_dofs();
-    const double   cells =
+    state_energies     = e;
+    const double error = client.l2_error(state, time);
+    const double dofs  = double(scheme.n_fields()) * discretization.n_dofs();
+    const double cells =
       discretization.get_triangulation().n_global_active_cells();
     // no NaN in statistics.csv or the VTU output: stop before writing
     AssertThrow(std::isfinite(e.willmore) && std::isfinite(e.area) &&
@@ -693,7 +736,6 @@ namespace PhaseField
     if (with_output && settings.vtu_interval > 0 &&
         (step % settings.vtu_interval == 0 || step == final_step))
       output_results(step, state);
-    return e;
   }
 
 

@@ -202,6 +202,13 @@ namespace PhaseField
      * extrapolated from the last two steps (StartValuePredictor).
      */
     bool extrapolated_start;
+    /**
+     * `Time stepping / Largest inside change factor`: a step whose result
+     * has an inside measure more than this factor larger or smaller than
+     * before the step is rejected and halved (TimeLoop::rejection()); 0:
+     * no limit.
+     */
+    double max_inside_change_factor;
 
     /** Size of time step @p step (1-based), see n_ramp_steps. */
     double

@@ -8,12 +8,28 @@
 namespace PhaseField
 {
   /**
+   * One multigrid cycle for an operator f L + D (ShiftedStiffness::
+   * make_multigrid()): an approximate inverse that the Krylov solvers use
+   * as preconditioner.
+   */
+  class MultigridCycle
+  {
+  public:
+    virtual ~MultigridCycle() = default;
+
+    /** @p dst = B @p src for the cycle B, an approximation of (f L + D)^-1. */
+    virtual void
+    vmult(Vector &dst, const Vector &src) const = 0;
+  };
+
+
+
+  /**
    * An operator f L + D for the stiffness operator L of a mesh, a number f
    * and a diagonal matrix D, as StiffnessOperator::shift() makes it: the
    * nested scheme's K(V), Khat and the factor G of its Schur
-   * preconditioner. Schemes apply it; solvers precondition it (an
-   * algebraic multigrid reads the rows of the Trilinos implementation,
-   * StiffnessPlusDiagonal).
+   * preconditioner. Schemes apply it; solvers precondition it with the
+   * multigrid cycle of its backend (make_multigrid()).
    */
   class ShiftedStiffness
   {
@@ -27,6 +43,21 @@ namespace PhaseField
     /** The number of rows (0 before the first StiffnessOperator::shift()). */
     virtual dealii::types::global_dof_index
     m() const = 0;
+
+    /**
+     * A multigrid cycle for this operator, set up now from its current
+     * values, with @p smoother_sweeps Chebyshev sweeps per level before
+     * and after the coarse correction. The coarse levels represent the
+     * constant and, if given, @p slow_mode (locally owned values): a
+     * slowly varying mode of the operator that the constant misses (the
+     * nested scheme's interface mode, SchurPreconditioner). If the
+     * operator is refilled in place later (StiffnessOperator::shift()),
+     * the cycle keeps the hierarchy of its set-up and multiplies with the
+     * current operator on the finest level.
+     */
+    virtual std::unique_ptr<MultigridCycle>
+    make_multigrid(const Vector      *slow_mode,
+                   const unsigned int smoother_sweeps) const = 0;
 
     /** Whether it has not been filled yet. */
     bool

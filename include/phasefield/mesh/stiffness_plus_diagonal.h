@@ -47,6 +47,11 @@ namespace PhaseField
     dealii::types::global_dof_index
     m() const override;
 
+    /** An AlgebraicMultigrid set up from the rows of this operator. */
+    std::unique_ptr<MultigridCycle>
+    make_multigrid(const Vector      *slow_mode,
+                   const unsigned int smoother_sweeps) const override;
+
     /** @name The Epetra_RowMatrix interface (read by ML) */
     /** @{ */
     int

@@ -271,7 +271,17 @@ namespace PhaseField
       return true;
     }
     double
-    energy_law_energy(const BlockVector &state) const override;
+    energy_law_energy(const Energies &energies) const override;
+
+    /**
+     * AugmentedLagrangian::monotonicity_tolerance: the round-off of the
+     * outer energy at the end of a step is about eta* / ttau relative.
+     */
+    double
+    energy_law_tolerance() const override
+    {
+      return AugmentedLagrangian::monotonicity_tolerance;
+    }
     double
     dissipation(const BlockVector &old_state,
                 const BlockVector &state,

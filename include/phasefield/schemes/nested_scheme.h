@@ -115,7 +115,7 @@ namespace PhaseField
     }
     /** NestedModel::energy_law_energy(). */
     double
-    energy_law_energy(const BlockVector &state) const override;
+    energy_law_energy(const Energies &energies) const override;
     /** NestedModel::dissipation(). */
     double
     dissipation(const BlockVector &old_state,

@@ -230,12 +230,29 @@ namespace PhaseField
       return false;
     }
 
-    /** mu W + eta A of @p state (weights of the outer energy). */
+    /**
+     * mu W + eta A (weights of the outer energy) of a state with the
+     * @p energies (energies() of the state).
+     */
     virtual double
-    energy_law_energy(const BlockVector &state) const
+    energy_law_energy(const Energies &energies) const
     {
-      (void)state;
+      (void)energies;
       return 0;
+    }
+
+    /**
+     * The rise of energy_law_energy() + dissipation() above
+     * energy_law_energy() before a step, relative to the latter, that the
+     * round-off and the tolerances of the scheme's solver allow; the time
+     * loop rejects a step above it. The default: the round-off of the
+     * energies, whose curvature (U - V) / ttau loses about log10(1/ttau)
+     * digits.
+     */
+    virtual double
+    energy_law_tolerance() const
+    {
+      return 1e-10;
     }
 
     /** The dissipation of the step from @p old_state to @p state. */

@@ -319,15 +319,15 @@ namespace PhaseField
     factorize_for_solve(const dealii::TrilinosWrappers::SparseMatrix &matrix);
 
     /**
-     * CG (GMRES if not symmetric) for @p op, preconditioned with one AMG
-     * cycle set up from @p rows, the same operator as Epetra_RowMatrix.
+     * CG (GMRES if not symmetric) for @p op, preconditioned with
+     * @p multigrid, a cycle for the same operator.
      */
     template <typename Operator>
     unsigned int
-    solve_with_multigrid(const Operator         &op,
-                         const Epetra_RowMatrix &rows,
-                         Vector                 &solution,
-                         const Vector           &rhs);
+    solve_with_multigrid(const Operator       &op,
+                         const MultigridCycle &multigrid,
+                         Vector               &solution,
+                         const Vector         &rhs);
 
     /** Right-preconditioned GMRES. */
     template <typename Operator, typename Preconditioner>

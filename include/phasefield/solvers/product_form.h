@@ -1,38 +1,20 @@
 #ifndef phasefield_solvers_product_form_h
 #define phasefield_solvers_product_form_h
 
-#include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <memory>
 #include <phasefield/core/linear_algebra.h>
-#include <phasefield/mesh/stiffness_plus_diagonal.h>
+#include <phasefield/mesh/stiffness_operator.h>
 
 /**
  * The pieces of the iterative solver of Schur complements in product form,
  * S = diag(d) + w Khat M^-1 Khat with a sparse second-order matrix Khat
  * and a diagonal M (LinearSolver::solve_product_form()): S is applied
  * without being assembled, and preconditioned by G^-1 M G^-1 with one
- * algebraic multigrid cycle (schur_smoother_sweeps) for each G^-1.
+ * multigrid cycle of the operator's backend (schur_smoother_sweeps) for
+ * each G^-1.
  */
 namespace PhaseField
 {
-  /**
-   * Largest coarsest-level matrix of the multigrid hierarchies; ML
-   * factorises it (KLU) at every set-up. deal.II's default, 2000, made
-   * this factorisation 15% of all instructions of a 3D level-5 cube step
-   * (callgrind, 1 rank). With 200, that step took 39.9e9 instead of
-   * 46.1e9 instructions (the AMG set-ups 7.8e9 instead of 14.6e9) and 210
-   * instead of 195 CG iterations.
-   */
-  constexpr unsigned int multigrid_coarse_size = 200;
-
-  /**
-   * Chebyshev sweeps (the smoother's polynomial degree) per level, before
-   * and after the coarse correction, of a multigrid cycle that stands for
-   * G^-1 in a CG solve with G (measured on the 3D cube: two sweeps need
-   * twice the CG iterations, more than three do not pay).
-   */
-  constexpr unsigned int multigrid_smoother_sweeps = 3;
-
   /**
    * Chebyshev sweeps of the cycles inside the product G^-1 M G^-1
    * (SchurPreconditioner). There the cycle's error matters in the norm of
@@ -49,37 +31,6 @@ namespace PhaseField
    * product").
    */
   constexpr unsigned int schur_smoother_sweeps = 6;
-
-  /**
-   * Set up the algebraic multigrid cycles (Trilinos ML) of the iterative
-   * solvers for @p matrix: aggregation for a scalar second-order
-   * operator, @p smoother_sweeps Chebyshev sweeps per level, a coarsest
-   * level of at most multigrid_coarse_size unknowns.
-   *
-   * The near null space that the aggregation keeps on the coarse levels
-   * is the constant vector, and with @p interface_mode (locally owned
-   * values) also that vector: it should hold the slowly varying modes of
-   * @p matrix that the constant misses, as the rigid body modes do for
-   * elasticity. See SchurPreconditioner for the one used.
-   */
-  void
-  initialize_multigrid(
-    dealii::TrilinosWrappers::PreconditionAMG &multigrid,
-    const Epetra_RowMatrix                    &matrix,
-    const Vector                              *interface_mode = nullptr,
-    const unsigned int smoother_sweeps = multigrid_smoother_sweeps);
-
-
-
-  /**
-   * The rows of @p op for an algebraic multigrid: the Trilinos
-   * implementation of f L + D (StiffnessPlusDiagonal) is an
-   * Epetra_RowMatrix. Throws for a backend without stored rows.
-   */
-  const Epetra_RowMatrix &
-  multigrid_rows(const ShiftedStiffness &op);
-
-
 
   /**
    * dst = A diag(@p diagonal) A src for a symmetric operator A, i.e. the
@@ -158,19 +109,15 @@ namespace PhaseField
     SchurPreconditioner(const ShiftedStiffness &g,
                         const Vector           &mass,
                         const Vector           *interface_mode = nullptr)
-      : mass(mass)
+      : multigrid(g.make_multigrid(interface_mode, schur_smoother_sweeps))
+      , mass(mass)
       , tmp(mass)
-    {
-      initialize_multigrid(multigrid,
-                           multigrid_rows(g),
-                           interface_mode,
-                           schur_smoother_sweeps);
-    }
+    {}
 
     void
     vmult(Vector &dst, const Vector &src) const
     {
-      apply_symmetric_product(multigrid, mass, tmp, dst, src);
+      apply_symmetric_product(*multigrid, mass, tmp, dst, src);
     }
 
     /** Number of rows of the preconditioned matrix. */
@@ -181,9 +128,9 @@ namespace PhaseField
     }
 
   private:
-    dealii::TrilinosWrappers::PreconditionAMG multigrid;
-    const Vector                             &mass;
-    mutable Vector                            tmp;
+    std::unique_ptr<MultigridCycle> multigrid;
+    const Vector                   &mass;
+    mutable Vector                  tmp;
   };
 } // namespace PhaseField
 

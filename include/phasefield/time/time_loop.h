@@ -5,6 +5,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <limits>
+#include <optional>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
@@ -22,8 +23,10 @@ namespace PhaseField
   /**
    * The time loop of every time-dependent program: steps of the sizes of
    * ModelParameters::step_size() (ramp-up, then Tau), each retried with
-   * half the step if the scheme's solver fails, the check of the energy
-   * law (thesis Cor. 3.3) for schemes that have one, narrow-band
+   * half the step if the scheme's solver fails or its result breaks the
+   * energy law (thesis Cor. 3.3, for schemes that have one) or changes the
+   * inside measure by more than `Time stepping / Largest inside change
+   * factor` (a jump to another branch of solutions), narrow-band
    * re-meshing every `Mesh / Refinement interval` steps, a row of
    * statistics.csv and a progress line per step, VTU output every
    * `Output / VTU interval` steps, a checkpoint every `Checkpoint /
@@ -167,6 +170,11 @@ namespace PhaseField
       /** Step sizes (ramp-up, Tau) and the number of steps. */
       ModelParameters model;
       unsigned int    max_step_halvings;
+      /**
+       * ModelParameters::max_inside_change_factor: the largest factor by
+       * which one step may change the inside measure (0: any change).
+       */
+      double max_inside_change_factor;
       /** NewtonParameters::regrow_step_size. */
       bool         regrow_step_size;
       bool         adaptive;
@@ -265,6 +273,14 @@ namespace PhaseField
     }
 
   private:
+    /** A step taken: its report, its size and the energies of its result. */
+    struct StepResult
+    {
+      StepReport report;
+      double     tau;
+      Energies   energies;
+    };
+
     /**
      * One try of a time step: its size and whether its start value is the
      * predictor's extrapolation (if it fails, the step is tried from the
@@ -352,7 +368,8 @@ namespace PhaseField
 
     /**
      * Step @p step from old_state into @p state by @p attempt, halved on
-     * failure; returns the report and the step size taken. Where
+     * failure or rejection(); returns the report and the step size taken.
+     * Where
      * the interface of the result left the band of finest cells
      * (Discretization::resolves_band()), the mesh is refined there and
      * the step repeated from old_state on it, with the result as the
@@ -360,17 +377,18 @@ namespace PhaseField
      * minimiser on a mesh that resolves it, and its energy changes at the
      * next re-meshing (edge restoration at level 10: by half or more).
      */
-    std::pair<StepReport, double>
+    StepResult
     advance_on_resolving_mesh(const unsigned int step,
                               BlockVector       &state,
                               const Attempt      attempt);
 
     /**
      * Step @p step from old_state into @p state by @p attempt, halved on
-     * failure; returns the report and the step size taken. @p start_tau is
-     * the step size of which @p state (the start value) is the result.
+     * failure or rejection(); returns the report and the step size taken.
+     * @p start_tau is the step size of which @p state (the start value) is
+     * the result.
      */
-    std::pair<StepReport, double>
+    StepResult
     advance_with_halving(const unsigned int step,
                          BlockVector       &state,
                          const double       start_tau,
@@ -413,15 +431,24 @@ namespace PhaseField
                                 const double       tau) const;
 
     /**
-     * Thesis Cor. 3.3: on a fixed mesh the minimiser of the outer energy
-     * satisfies E^{k+1} + dissipation <= E^k; warn if the step found
-     * another critical point.
+     * Why the converged result @p state, with @p energies, of a step of
+     * size @p tau from old_state is not taken; empty if it is. Thesis
+     * Cor. 3.3: on a fixed mesh the minimiser of the outer energy satisfies
+     * E^{k+1} + dissipation <= E^k (for schemes with an energy law and
+     * steps to which it applies), so a result above that is another
+     * critical point. A flow moves the interface continuously, so a result
+     * whose inside measure is more than Settings::max_inside_change_factor
+     * times larger or smaller than old_state's has jumped to another branch
+     * (the augmented Lagrangian's level-6 cube vanished in one step).
      */
-    void
-    check_energy_law(const unsigned int step,
-                     const BlockVector &state,
-                     const double       energy_before,
-                     const double       tau) const;
+    std::string
+    rejection(const BlockVector &state,
+              const Energies    &energies,
+              const double       tau) const;
+
+    /** The energies of @p state, computed unless state_energies has them. */
+    Energies
+    energies_of(const BlockVector &state) const;
 
     /** Adapt the mesh to the state and restore what the transfer broke. */
     void
@@ -429,12 +456,14 @@ namespace PhaseField
 
     /**
      * Statistics row, progress line and (if due and @p with_output) VTU
-     * output of step @p step, taken at size @p tau after @p halvings
-     * halvings (column `step_halvings`); returns the energies of @p state.
+     * output of step @p step with the @p energies of @p state, taken at
+     * size @p tau after @p halvings halvings (column `step_halvings`); the
+     * energies are kept as state_energies.
      */
-    Energies
+    void
     record(const unsigned int step,
            const BlockVector &state,
+           const Energies    &energies,
            const StepReport  &report,
            const double       tau,
            const unsigned int halvings    = 0,
@@ -484,6 +513,18 @@ namespace PhaseField
      */
     double      step_size_limit = 0;
     BlockVector old_state;
+    /**
+     * The energies of old_state on the mesh of the current step, which
+     * rejection() compares a result with.
+     */
+    Energies old_energies;
+    /**
+     * The energies of the state recorded last, while neither its mesh nor
+     * its values changed since (remesh(), load_checkpoint() reset it): so
+     * the energies of a state are computed once, where it is the result
+     * of one step and the start of the next.
+     */
+    std::optional<Energies> state_energies;
     /** The history of the last steps (if extrapolates()). */
     StartValuePredictor predictor;
     /**

@@ -127,9 +127,9 @@ namespace PhaseField
 
   template <int dim>
   double
-  NestedModel<dim>::energy_law_energy(const BlockVector &state) const
+  NestedModel<dim>::energy_law_energy(const Energies &energies) const
   {
-    return weighted_regularisation(settings.outer_energy, energies(state));
+    return weighted_regularisation(settings.outer_energy, energies);
   }
 
 

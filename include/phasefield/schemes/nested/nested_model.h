@@ -78,11 +78,11 @@ namespace PhaseField
     curvature(const BlockVector &state, Vector &curvature) const;
 
     /**
-     * mu W + eta A of @p state (the weights of the outer energy): the one
-     * place that combines them.
+     * mu W + eta A of a state with the @p energies (the weights of the
+     * outer energy, combined by weighted_regularisation()).
      */
     double
-    energy_law_energy(const BlockVector &state) const;
+    energy_law_energy(const Energies &energies) const;
 
     /**
      * eps ||U - U^k||^2_M / (2 tau) in geometric units: by thesis

@@ -3,7 +3,7 @@
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <deal.II/base/exceptions.h>
-#include <phasefield/solvers/product_form.h>
+#include <phasefield/mesh/algebraic_multigrid.h>
 #include <string>
 #include <vector>
 
@@ -37,24 +37,9 @@ namespace PhaseField
 
 
 
-  const Epetra_RowMatrix &
-  multigrid_rows(const ShiftedStiffness &op)
-  {
-    const auto *rows = dynamic_cast<const Epetra_RowMatrix *>(&op);
-    AssertThrow(rows != nullptr,
-                dealii::ExcMessage(
-                  "The algebraic multigrid reads the rows of the operator "
-                  "f L + D, which this stiffness backend does not store."));
-    return *rows;
-  }
-
-
-
-  void
-  initialize_multigrid(dealii::TrilinosWrappers::PreconditionAMG &multigrid,
-                       const Epetra_RowMatrix                    &matrix,
-                       const Vector      *interface_mode,
-                       const unsigned int smoother_sweeps)
+  AlgebraicMultigrid::AlgebraicMultigrid(const Epetra_RowMatrix &matrix,
+                                         const Vector           *slow_mode,
+                                         const unsigned int smoother_sweeps)
   {
     assert_positive_diagonal(matrix);
     dealii::TrilinosWrappers::PreconditionAMG::AdditionalData settings;
@@ -67,21 +52,27 @@ namespace PhaseField
     std::unique_ptr<Epetra_MultiVector> constant_modes;
     settings.set_parameters(parameters, constant_modes, matrix);
     parameters.set("coarse: max size", static_cast<int>(multigrid_coarse_size));
-    // near null space {1, interface mode}, column by column (ML copies it
+    // near null space {1, slow mode}, column by column (ML copies it
     // during the set-up)
     std::vector<double> modes;
-    if (interface_mode != nullptr)
+    if (slow_mode != nullptr)
       {
-        const unsigned int n = interface_mode->locally_owned_size();
+        const unsigned int n = slow_mode->locally_owned_size();
         modes.assign(2 * n, 1.);
-        std::copy(interface_mode->begin(),
-                  interface_mode->end(),
-                  modes.begin() + n);
+        std::copy(slow_mode->begin(), slow_mode->end(), modes.begin() + n);
         parameters.set("null space: type", "pre-computed");
         parameters.set("null space: dimension", 2);
         parameters.set("null space: vectors", modes.data());
         parameters.set("null space: add default vectors", false);
       }
     multigrid.initialize(matrix, parameters);
+  }
+
+
+
+  void
+  AlgebraicMultigrid::vmult(Vector &dst, const Vector &src) const
+  {
+    multigrid.vmult(dst, src);
   }
 } // namespace PhaseField
