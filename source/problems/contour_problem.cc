@@ -25,6 +25,8 @@ namespace PhaseField
         Shapes::create_signed_distance<dim>(parameters.willmore.geometry);
       setup.outer_energy.willmore_weight = parameters.model.willmore_weight;
       setup.outer_energy.area_weight     = parameters.model.area_weight;
+      // the mesh is refined level by level up to the last one
+      setup.finest_level = parameters.multilevel.levels.back();
       return setup;
     }
   } // namespace
@@ -46,15 +48,20 @@ namespace PhaseField
 
   template <int dim>
   void
-  ContourProblem<dim>::run()
+  ContourProblem<dim>::set_first_level()
   {
-    create_output_directory(this->willmore_parameters.output_directory,
-                            this->mpi_communicator);
-    const bool         resume = this->willmore_parameters.checkpoint.resume;
-    const unsigned int first  = resume ? resumed_level_index() : 0;
-    this->level_parameters    = parameters.for_level(first);
-    this->create_scheme(this->level_parameters);
-    this->print_header();
+    first_level_index =
+      this->willmore_parameters.checkpoint.resume ? resumed_level_index() : 0;
+    this->level_parameters = parameters.for_level(first_level_index);
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::print_header() const
+  {
+    PhaseFieldProblem<dim>::print_header();
     this->pcout << "levels";
     for (const unsigned int level : parameters.multilevel.levels)
       this->pcout << ' ' << level;
@@ -62,22 +69,22 @@ namespace PhaseField
                 << ", eta = " << parameters.model.area_weight
                 << ", gamma = " << parameters.model.mismatch_weight
                 << std::endl;
-    if (!resume)
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::run_time_loops()
+  {
+    const bool   resume = this->willmore_parameters.checkpoint.resume;
+    unsigned int step   = 0;
+    double       time   = 0;
+    for (unsigned int i = first_level_index;
+         i < parameters.multilevel.levels.size();
+         ++i)
       {
-        {
-          TimerOutput::Scope t(this->computing_timer, "mesh: initial");
-          this->discretization.create_mesh(
-            this->setup.signed_distance.get(),
-            this->level_parameters.model.epsilon);
-        }
-        TimerOutput::Scope t(this->computing_timer, "initialisation");
-        this->initialize_fields();
-      }
-    unsigned int step = 0;
-    double       time = 0;
-    for (unsigned int i = first; i < parameters.multilevel.levels.size(); ++i)
-      {
-        if (i > first)
+        if (i > first_level_index)
           move_to_level(i);
         start_level(i);
         typename TimeLoop<dim>::Settings settings =
@@ -91,7 +98,7 @@ namespace PhaseField
                                 *this,
                                 this->pcout,
                                 this->computing_timer);
-        if (resume && i == first)
+        if (resume && i == first_level_index)
           time_loop.resume(this->solution);
         else if (i == 0)
           time_loop.run(this->solution);
@@ -101,9 +108,6 @@ namespace PhaseField
         time = time_loop.get_time();
         write_level_results(i + 1 == parameters.multilevel.levels.size());
       }
-    this->computing_timer.print_summary();
-    print_peak_memory(this->pcout, this->mpi_communicator);
-    this->discretization.print_partition_balance(this->pcout);
   }
 
 

@@ -58,10 +58,6 @@ namespace PhaseField
     /** @p parameters must outlive the problem. */
     explicit ContourProblem(const ContourParameters &parameters);
 
-    /** All levels; throws on failure. */
-    void
-    run() override;
-
     /** One step of Algorithm 6.1 (nested tau/2, mismatch tau, nested tau/2). */
     StepReport
     advance(TimeSteppingScheme<dim> &scheme,
@@ -123,6 +119,27 @@ namespace PhaseField
     typename MismatchTerm<dim>::Evaluation
     mismatch(const BlockVector &state) const;
 
+  protected:
+    /**
+     * The first level of `Multilevel / Levels`, or with `Checkpoint /
+     * Resume` the level of the checkpoint (resumed_level_index()).
+     */
+    void
+    set_first_level() override;
+
+    /** The base's header and the levels and weights. */
+    void
+    print_header() const override;
+
+    /**
+     * The levels from the first one on: one scheme and one TimeLoop per
+     * level (the first one resumed with `Checkpoint / Resume`), the
+     * transition between them (move_to_level()) and the labelings at the
+     * end of each.
+     */
+    void
+    run_time_loops() override;
+
   private:
     /** Entries of checkpoint_data() before the energy history. */
     static constexpr unsigned int n_level_entries = 2;
@@ -170,7 +187,10 @@ namespace PhaseField
     ghosted_u(const BlockVector &state) const;
 
     const ContourParameters &parameters;
-    unsigned int             level_index = 0;
+    /** The index in `Multilevel / Levels` of the level the run starts on. */
+    unsigned int first_level_index = 0;
+    /** The index in `Multilevel / Levels` of the current level. */
+    unsigned int level_index = 0;
     /**
      * The mismatch j of the current level (its pixel grid and target
      * labeling), whose gradient the explicit step of Algorithm 6.1 takes.
