@@ -7,6 +7,8 @@
 #include <phasefield/problems/contour_output.h>
 #include <phasefield/problems/contour_problem.h>
 #include <phasefield/time/checkpoint.h>
+#include <sstream>
+#include <stdexcept>
 
 namespace PhaseField
 {
@@ -77,9 +79,8 @@ namespace PhaseField
   void
   ContourProblem<dim>::run_time_loops()
   {
-    const bool   resume = this->willmore_parameters.checkpoint.resume;
-    unsigned int step   = 0;
-    double       time   = 0;
+    unsigned int step = 0;
+    double       time = 0;
     for (unsigned int i = first_level_index;
          i < parameters.multilevel.levels.size();
          ++i)
@@ -98,16 +99,96 @@ namespace PhaseField
                                 *this,
                                 this->pcout,
                                 this->computing_timer);
-        if (resume && i == first_level_index)
-          time_loop.resume(this->solution);
-        else if (i == 0)
-          time_loop.run(this->solution);
-        else
-          time_loop.continue_run(this->solution, step, time);
+        run_level(time_loop, i, step, time);
         step = time_loop.get_last_step();
         time = time_loop.get_time();
         write_level_results(i + 1 == parameters.multilevel.levels.size());
       }
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::run_level(TimeLoop<dim>     &time_loop,
+                                 const unsigned int index,
+                                 const unsigned int step,
+                                 const double       time)
+  {
+    try
+      {
+        if (this->willmore_parameters.checkpoint.resume &&
+            index == first_level_index)
+          time_loop.resume(this->solution);
+        else if (index == 0)
+          time_loop.run(this->solution);
+        else
+          time_loop.continue_run(this->solution, step, time);
+      }
+    catch (const ExceptionBase &exc)
+      {
+        // a step failed (after all halvings, or by an error of a solver)
+        // only if its last attempt did not finish; other errors pass
+        // unchanged
+        if (!unfinished_sub_step)
+          throw;
+        std::ostringstream message;
+        exc.print_info(message);
+        throw std::runtime_error(
+          step_failure_message(time_loop.get_last_step() + 1, message.str()));
+      }
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContourProblem<dim>::step_failure_message(const unsigned int step,
+                                            const std::string &reason) const
+  {
+    const auto &[sub_step, tau] = *unfinished_sub_step;
+    std::ostringstream text;
+    text << "Step " << step << " of shape_from_contour (level "
+         << this->level_parameters.mesh.finest_level << ") failed in ";
+    switch (sub_step)
+      {
+        case SubStep::first_nested_step:
+          text << "sub-step 1 of 3 of Algorithm 6.1, the nested step of the "
+                  "regularisation with tau/2 = "
+               << tau / 2
+               << ", did not converge. Try a smaller <Time "
+                  "stepping / Tau> or <Time stepping / Inner tau>, or larger "
+                  "<Newton / Maximum iterations> or <Newton / Maximum step "
+                  "halvings>.";
+          break;
+        case SubStep::mismatch_step:
+          text << "sub-step 2 of 3 of Algorithm 6.1, the explicit mismatch "
+                  "step with tau = "
+               << tau
+               << ", made the phase field not finite (nan or inf). The "
+                  "step moves U by tau/epsilon times the mismatch gradient, "
+                  "which is proportional to gamma: try a smaller <Model / "
+                  "Mismatch weight> or <Time stepping / Tau>.";
+          break;
+        case SubStep::second_nested_step:
+          text << "sub-step 3 of 3 of Algorithm 6.1, the nested step with "
+                  "tau/2 = "
+               << tau / 2
+               << " from the result of the explicit mismatch step, did not "
+                  "converge. The mismatch step moves U by "
+                  "tau/epsilon times the mismatch gradient, which is "
+                  "proportional to gamma, and may move it too far for "
+                  "Newton's method: try a smaller <Model / Mismatch weight> "
+                  "or <Time stepping / Tau>, or larger <Newton / Maximum "
+                  "step halvings>.";
+          break;
+      }
+    // without deal.II's indentation
+    const std::size_t begin = reason.find_first_not_of(" \n");
+    const std::size_t end   = reason.find_last_not_of(" \n");
+    if (begin != std::string::npos)
+      text << " (" << reason.substr(begin, end - begin + 1) << ")";
+    return text.str();
   }
 
 
@@ -281,15 +362,27 @@ namespace PhaseField
     // have tau/2
     const double half = 0.5 * tau;
     scheme.prepare_step(state, tau, half);
+    unfinished_sub_step    = {SubStep::first_nested_step, tau};
     const StepReport first = scheme.advance(old_state, state, half);
     if (!first.converged)
       return first;
+    unfinished_sub_step = {SubStep::mismatch_step, tau};
     {
       TimerOutput::Scope t(this->computing_timer, "labeling: mismatch step");
       mismatch_step(state, tau);
     }
+    // collective: the norm is that of all ranks
+    if (!std::isfinite(state.block(0).l2_norm()))
+      {
+        StepReport failed = first;
+        failed.converged  = false;
+        return failed;
+      }
+    unfinished_sub_step      = {SubStep::second_nested_step, tau};
     const BlockVector middle = state;
     const StepReport  second = scheme.advance(middle, state, half);
+    if (second.converged)
+      unfinished_sub_step.reset();
     scheme.prepare_step(state, half, tau);
     return combine(first, second);
   }

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function.h>
 #include <memory>
+#include <optional>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/geometry/huffman_labeling.h>
 #include <phasefield/geometry/images.h>
@@ -10,6 +11,7 @@
 #include <phasefield/problems/phase_field_problem.h>
 #include <phasefield/schemes/mismatch_term.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PhaseField
@@ -141,6 +143,38 @@ namespace PhaseField
     run_time_loops() override;
 
   private:
+    /** The sub-steps of Algorithm 6.1, in their order. */
+    enum class SubStep
+    {
+      first_nested_step,
+      mismatch_step,
+      second_nested_step
+    };
+
+    /**
+     * One level's TimeLoop from the last step @p step at @p time: run()
+     * on the first level, resume() on the level of a checkpoint,
+     * continue_run() otherwise. A step that fails after all halvings,
+     * or in which a solver throws a deal.II exception, throws a
+     * std::runtime_error (exit status 1, as other runtime failures) whose
+     * message names the step, the sub-step of Algorithm 6.1 that failed
+     * and the parameters to change (step_failure_message()).
+     */
+    void
+    run_level(TimeLoop<dim>     &time_loop,
+              const unsigned int index,
+              const unsigned int step,
+              const double       time);
+
+    /**
+     * The message of step @p step that failed: the sub-step of its last
+     * attempt that did not finish, the parameters that decide whether it
+     * converges, and @p reason (TimeLoop's message or the solver's).
+     */
+    std::string
+    step_failure_message(const unsigned int step,
+                         const std::string &reason) const;
+
     /** Entries of checkpoint_data() before the energy history. */
     static constexpr unsigned int n_level_entries = 2;
 
@@ -203,6 +237,12 @@ namespace PhaseField
      * error) after every step of the current level.
      */
     std::vector<double> criterion_history;
+    /**
+     * The sub-step of Algorithm 6.1 in which the last attempt of advance()
+     * stopped (it did not converge, or a solver threw) and the step size
+     * of that attempt; empty after an attempt that converged.
+     */
+    std::optional<std::pair<SubStep, double>> unfinished_sub_step;
   };
 } // namespace PhaseField
 
