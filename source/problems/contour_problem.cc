@@ -89,8 +89,7 @@ namespace PhaseField
           move_to_level(i);
         start_level(i);
         typename TimeLoop<dim>::Settings settings =
-          TimeLoop<dim>::Settings::from(this->level_parameters,
-                                        this->setup.program_name);
+          this->time_loop_settings(this->level_parameters);
         // a level whose steps are done continues with the next one
         settings.refuse_empty_resume = false;
         TimeLoop<dim> time_loop(settings,
@@ -218,6 +217,39 @@ namespace PhaseField
                        "<Multilevel / Levels> does not have there: resume "
                        "with the levels of the run that wrote it.");
     return index;
+  }
+
+
+
+  template <int dim>
+  Checkpoint::Parameters
+  ContourProblem<dim>::own_checkpoint_parameters() const
+  {
+    const std::vector<unsigned int> &levels = parameters.multilevel.levels;
+    const std::vector<double>        levels_so_far(levels.begin(),
+                                            levels.begin() + level_index + 1);
+    Checkpoint::Parameters           recorded = {
+                {"Model / Willmore weight",
+                 Checkpoint::exact_value(parameters.model.willmore_weight)},
+                {"Model / Area weight",
+                 Checkpoint::exact_value(parameters.model.area_weight)},
+                {"Model / Mismatch weight",
+                 Checkpoint::exact_value(parameters.model.mismatch_weight)},
+                {"Multilevel / Levels", Checkpoint::exact_values(levels_so_far)}};
+    if (parameters.target.is_image())
+      {
+        recorded.emplace_back("Target / Shape", "image");
+        recorded.emplace_back("Target / Image file",
+                              parameters.target.image_file);
+        recorded.emplace_back("Target / Maximum label",
+                              Checkpoint::exact_value(
+                                parameters.target.maximum_label));
+      }
+    else
+      for (const auto &entry :
+           Checkpoint::geometry_parameters(parameters.target.shape))
+        recorded.push_back(entry);
+    return recorded;
   }
 
 

@@ -132,8 +132,7 @@ namespace PhaseField
           willmore_parameters.mesh.finest_level)
       start = coarse_start_value();
     // the scheme of the finest level exists only now
-    TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(willmore_parameters,
-                                                          setup.program_name),
+    TimeLoop<dim> time_loop(time_loop_settings(willmore_parameters),
                             discretization,
                             *scheme,
                             *this,
@@ -143,6 +142,22 @@ namespace PhaseField
       time_loop.resume(solution);
     else
       time_loop.run(solution, start.n_blocks() > 0 ? &start : nullptr);
+  }
+
+
+
+  template <int dim>
+  typename TimeLoop<dim>::Settings
+  PhaseFieldProblem<dim>::time_loop_settings(
+    const WillmoreParameters &parameters) const
+  {
+    typename TimeLoop<dim>::Settings settings =
+      TimeLoop<dim>::Settings::from(parameters, setup.program_name);
+    const Checkpoint::Parameters own = own_checkpoint_parameters();
+    settings.checkpoint_parameters.insert(settings.checkpoint_parameters.end(),
+                                          own.begin(),
+                                          own.end());
+    return settings;
   }
 
 

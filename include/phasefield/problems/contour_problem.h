@@ -101,6 +101,17 @@ namespace PhaseField
     std::vector<double>
     checkpoint_data() const override;
 
+    /**
+     * The parameters that give the state its meaning, beyond
+     * willmore_flow's: the weights (`Model / Willmore weight`, `Area
+     * weight`, `Mismatch weight`), the levels up to the current one
+     * (`Multilevel / Levels`: later levels may be added or removed on
+     * resume) and the target (`Target / Shape` with its numbers, or
+     * `Image file` and `Maximum label`).
+     */
+    Checkpoint::Parameters
+    own_checkpoint_parameters() const override;
+
     /** The energy history of the level from checkpoint_data(). */
     void
     after_load(BlockVector               &state,

@@ -10,6 +10,7 @@
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/outer_energy.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
+#include <phasefield/time/checkpoint.h>
 #include <phasefield/time/time_loop.h>
 #include <string>
 
@@ -100,6 +101,25 @@ namespace PhaseField
     /** The first lines of the log: what runs, with which solver. */
     virtual void
     print_header() const;
+
+    /**
+     * The problem's own parameters that change the meaning of its state,
+     * which a checkpoint records and a resume compares (refused unless
+     * listed in `Checkpoint / Allow parameter change`), beyond those of
+     * TimeLoop::Settings::from(). The default: none.
+     */
+    virtual Checkpoint::Parameters
+    own_checkpoint_parameters() const
+    {
+      return {};
+    }
+
+    /**
+     * The TimeLoop settings of @p parameters for this program, with
+     * own_checkpoint_parameters() among the recorded parameters.
+     */
+    typename TimeLoop<dim>::Settings
+    time_loop_settings(const WillmoreParameters &parameters) const;
 
     /**
      * Hook of run(), after the output directory exists and before the
