@@ -12,7 +12,13 @@
 //   checkpoint would have written (copied from the reference), resumed
 //   with both levels. It must take no further step on level 5 (the
 //   checkpoint says the level ended) and drop the copied rows, among them
-//   the level-start row that repeats step 3.
+//   the level-start row that repeats step 3;
+// - "on level 6": a run that ends after the first step of level 6 (step
+//   4), resumed with both levels from its checkpoint on level 6. Its mesh
+//   must be refined to level 6 at the re-meshing after step 5, which it
+//   was not before the finest level of the loaded mesh was that of the
+//   checkpoint (issue 52 item 3: step 6 had fewer cells than the
+//   uninterrupted run's).
 // The statistics.csv rows (all columns but wall_seconds: energies,
 // mismatch, labeling error, iterations) must agree bitwise with the
 // uninterrupted run in serial; the .mpirun=2 variant saves and loads on 2
@@ -147,6 +153,11 @@ main(int argc, char **argv)
   log << "resumed after the end of level 5 (later rows dropped): "
          "statistics.csv agrees: "
       << agrees(reference, killed) << std::endl;
+
+  run(parameters("5, 6", "5, 1", false), "level_6");
+  const Testing::RunResult on_level_6 = run(full(true), "level_6");
+  log << "resumed after the first step of level 6: statistics.csv agrees: "
+      << agrees(reference, on_level_6) << std::endl;
 
   try
     {

@@ -7,6 +7,8 @@
 #include <phasefield/problems/contour_output.h>
 #include <phasefield/problems/contour_problem.h>
 #include <phasefield/time/checkpoint.h>
+#include <sstream>
+#include <stdexcept>
 
 namespace PhaseField
 {
@@ -25,6 +27,8 @@ namespace PhaseField
         Shapes::create_signed_distance<dim>(parameters.willmore.geometry);
       setup.outer_energy.willmore_weight = parameters.model.willmore_weight;
       setup.outer_energy.area_weight     = parameters.model.area_weight;
+      // the mesh is refined level by level up to the last one
+      setup.finest_level = parameters.multilevel.levels.back();
       return setup;
     }
   } // namespace
@@ -46,15 +50,20 @@ namespace PhaseField
 
   template <int dim>
   void
-  ContourProblem<dim>::run()
+  ContourProblem<dim>::set_first_level()
   {
-    create_output_directory(this->willmore_parameters.output_directory,
-                            this->mpi_communicator);
-    const bool         resume = this->willmore_parameters.checkpoint.resume;
-    const unsigned int first  = resume ? resumed_level_index() : 0;
-    this->level_parameters    = parameters.for_level(first);
-    this->create_scheme(this->level_parameters);
-    this->print_header();
+    first_level_index =
+      this->willmore_parameters.checkpoint.resume ? resumed_level_index() : 0;
+    this->level_parameters = parameters.for_level(first_level_index);
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::print_header() const
+  {
+    PhaseFieldProblem<dim>::print_header();
     this->pcout << "levels";
     for (const unsigned int level : parameters.multilevel.levels)
       this->pcout << ' ' << level;
@@ -62,27 +71,25 @@ namespace PhaseField
                 << ", eta = " << parameters.model.area_weight
                 << ", gamma = " << parameters.model.mismatch_weight
                 << std::endl;
-    if (!resume)
-      {
-        {
-          TimerOutput::Scope t(this->computing_timer, "mesh: initial");
-          this->discretization.create_mesh(
-            this->setup.signed_distance.get(),
-            this->level_parameters.model.epsilon);
-        }
-        TimerOutput::Scope t(this->computing_timer, "initialisation");
-        this->initialize_fields();
-      }
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::run_time_loops()
+  {
     unsigned int step = 0;
     double       time = 0;
-    for (unsigned int i = first; i < parameters.multilevel.levels.size(); ++i)
+    for (unsigned int i = first_level_index;
+         i < parameters.multilevel.levels.size();
+         ++i)
       {
-        if (i > first)
+        if (i > first_level_index)
           move_to_level(i);
         start_level(i);
         typename TimeLoop<dim>::Settings settings =
-          TimeLoop<dim>::Settings::from(this->level_parameters,
-                                        this->setup.program_name);
+          this->time_loop_settings(this->level_parameters);
         // a level whose steps are done continues with the next one
         settings.refuse_empty_resume = false;
         TimeLoop<dim> time_loop(settings,
@@ -91,19 +98,96 @@ namespace PhaseField
                                 *this,
                                 this->pcout,
                                 this->computing_timer);
-        if (resume && i == first)
-          time_loop.resume(this->solution);
-        else if (i == 0)
-          time_loop.run(this->solution);
-        else
-          time_loop.continue_run(this->solution, step, time);
+        run_level(time_loop, i, step, time);
         step = time_loop.get_last_step();
         time = time_loop.get_time();
         write_level_results(i + 1 == parameters.multilevel.levels.size());
       }
-    this->computing_timer.print_summary();
-    print_peak_memory(this->pcout, this->mpi_communicator);
-    this->discretization.print_partition_balance(this->pcout);
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::run_level(TimeLoop<dim>     &time_loop,
+                                 const unsigned int index,
+                                 const unsigned int step,
+                                 const double       time)
+  {
+    try
+      {
+        if (this->willmore_parameters.checkpoint.resume &&
+            index == first_level_index)
+          time_loop.resume(this->solution);
+        else if (index == 0)
+          time_loop.run(this->solution);
+        else
+          time_loop.continue_run(this->solution, step, time);
+      }
+    catch (const ExceptionBase &exc)
+      {
+        // a step failed (after all halvings, or by an error of a solver)
+        // only if its last attempt did not finish; other errors pass
+        // unchanged
+        if (!unfinished_sub_step)
+          throw;
+        std::ostringstream message;
+        exc.print_info(message);
+        throw std::runtime_error(
+          step_failure_message(time_loop.get_last_step() + 1, message.str()));
+      }
+  }
+
+
+
+  template <int dim>
+  std::string
+  ContourProblem<dim>::step_failure_message(const unsigned int step,
+                                            const std::string &reason) const
+  {
+    const auto &[sub_step, tau] = *unfinished_sub_step;
+    std::ostringstream text;
+    text << "Step " << step << " of shape_from_contour (level "
+         << this->level_parameters.mesh.finest_level << ") failed in ";
+    switch (sub_step)
+      {
+        case SubStep::first_nested_step:
+          text << "sub-step 1 of 3 of Algorithm 6.1, the nested step of the "
+                  "regularisation with tau/2 = "
+               << tau / 2
+               << ", did not converge. Try a smaller <Time "
+                  "stepping / Tau> or <Time stepping / Inner tau>, or larger "
+                  "<Newton / Maximum iterations> or <Newton / Maximum step "
+                  "halvings>.";
+          break;
+        case SubStep::mismatch_step:
+          text << "sub-step 2 of 3 of Algorithm 6.1, the explicit mismatch "
+                  "step with tau = "
+               << tau
+               << ", made the phase field not finite (nan or inf). The "
+                  "step moves U by tau/epsilon times the mismatch gradient, "
+                  "which is proportional to gamma: try a smaller <Model / "
+                  "Mismatch weight> or <Time stepping / Tau>.";
+          break;
+        case SubStep::second_nested_step:
+          text << "sub-step 3 of 3 of Algorithm 6.1, the nested step with "
+                  "tau/2 = "
+               << tau / 2
+               << " from the result of the explicit mismatch step, did not "
+                  "converge. The mismatch step moves U by "
+                  "tau/epsilon times the mismatch gradient, which is "
+                  "proportional to gamma, and may move it too far for "
+                  "Newton's method: try a smaller <Model / Mismatch weight> "
+                  "or <Time stepping / Tau>, or larger <Newton / Maximum "
+                  "step halvings>.";
+          break;
+      }
+    // without deal.II's indentation
+    const std::size_t begin = reason.find_first_not_of(" \n");
+    const std::size_t end   = reason.find_last_not_of(" \n");
+    if (begin != std::string::npos)
+      text << " (" << reason.substr(begin, end - begin + 1) << ")";
+    return text.str();
   }
 
 
@@ -133,6 +217,39 @@ namespace PhaseField
                        "<Multilevel / Levels> does not have there: resume "
                        "with the levels of the run that wrote it.");
     return index;
+  }
+
+
+
+  template <int dim>
+  Checkpoint::Parameters
+  ContourProblem<dim>::own_checkpoint_parameters() const
+  {
+    const std::vector<unsigned int> &levels = parameters.multilevel.levels;
+    const std::vector<double>        levels_so_far(levels.begin(),
+                                            levels.begin() + level_index + 1);
+    Checkpoint::Parameters           recorded = {
+                {"Model / Willmore weight",
+                 Checkpoint::exact_value(parameters.model.willmore_weight)},
+                {"Model / Area weight",
+                 Checkpoint::exact_value(parameters.model.area_weight)},
+                {"Model / Mismatch weight",
+                 Checkpoint::exact_value(parameters.model.mismatch_weight)},
+                {"Multilevel / Levels", Checkpoint::exact_values(levels_so_far)}};
+    if (parameters.target.is_image())
+      {
+        recorded.emplace_back("Target / Shape", "image");
+        recorded.emplace_back("Target / Image file",
+                              parameters.target.image_file);
+        recorded.emplace_back("Target / Maximum label",
+                              Checkpoint::exact_value(
+                                parameters.target.maximum_label));
+      }
+    else
+      for (const auto &entry :
+           Checkpoint::geometry_parameters(parameters.target.shape))
+        recorded.push_back(entry);
+    return recorded;
   }
 
 
@@ -277,15 +394,27 @@ namespace PhaseField
     // have tau/2
     const double half = 0.5 * tau;
     scheme.prepare_step(state, tau, half);
+    unfinished_sub_step    = {SubStep::first_nested_step, tau};
     const StepReport first = scheme.advance(old_state, state, half);
     if (!first.converged)
       return first;
+    unfinished_sub_step = {SubStep::mismatch_step, tau};
     {
       TimerOutput::Scope t(this->computing_timer, "labeling: mismatch step");
       mismatch_step(state, tau);
     }
+    // collective: the norm is that of all ranks
+    if (!std::isfinite(state.block(0).l2_norm()))
+      {
+        StepReport failed = first;
+        failed.converged  = false;
+        return failed;
+      }
+    unfinished_sub_step      = {SubStep::second_nested_step, tau};
     const BlockVector middle = state;
     const StepReport  second = scheme.advance(middle, state, half);
+    if (second.converged)
+      unfinished_sub_step.reset();
     scheme.prepare_step(state, half, tau);
     return combine(first, second);
   }

@@ -17,12 +17,14 @@ namespace PhaseField
     /** The discretisation of the Willmore-flow parameters. */
     template <int dim>
     typename Discretization<dim>::Settings
-    discretization_settings(const MeshParameters &mesh,
-                            const double          coarsening_band_factor)
+    discretization_settings(const MeshParameters                         &mesh,
+                            const typename PhaseFieldProblem<dim>::Setup &setup)
     {
       typename Discretization<dim>::Settings settings;
-      settings.mesh                   = mesh;
-      settings.coarsening_band_factor = coarsening_band_factor;
+      settings.mesh = mesh;
+      settings.mesh.finest_level =
+        std::max(mesh.finest_level, setup.finest_level);
+      settings.coarsening_band_factor = setup.coarsening_band_factor;
       return settings;
     }
   } // namespace
@@ -42,8 +44,7 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , discretization(discretization_settings<dim>(parameters.mesh,
-                                                  setup.coarsening_band_factor),
+    , discretization(discretization_settings<dim>(parameters.mesh, setup),
                      mpi_communicator)
   {}
 
@@ -70,36 +71,68 @@ namespace PhaseField
   void
   PhaseFieldProblem<dim>::run()
   {
-    create_scheme(willmore_parameters);
     create_output_directory(willmore_parameters.output_directory,
                             mpi_communicator);
+    set_first_level();
+    // a run that refines to finer levels later (Setup::finest_level)
+    // starts its mesh, or loads its checkpoint, on the first level
+    const unsigned int first_level = level_parameters.mesh.finest_level;
+    if (first_level < discretization.get_settings().mesh.finest_level)
+      discretization.start_at_level(first_level);
+    create_scheme(level_parameters);
     print_header();
-    BlockVector start;
     if (!willmore_parameters.checkpoint.resume)
+      create_initial_state();
+    run_time_loops();
+    computing_timer.print_summary();
+    print_peak_memory(pcout, mpi_communicator);
+    discretization.print_partition_balance(pcout);
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::set_first_level()
+  {
+    level_parameters = willmore_parameters;
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::create_initial_state()
+  {
+    const unsigned int first_level = level_parameters.start_level();
+    if (first_level < level_parameters.mesh.finest_level)
       {
-        const unsigned int first_level = willmore_parameters.start_level();
-        if (first_level < willmore_parameters.mesh.finest_level)
-          {
-            level_parameters =
-              willmore_parameters.for_finest_level(first_level);
-            discretization.start_at_level(first_level);
-            create_scheme(level_parameters);
-          }
-        {
-          TimerOutput::Scope t(computing_timer, "mesh: initial");
-          discretization.create_mesh(setup.signed_distance.get(),
-                                     level_parameters.model.epsilon);
-        }
-        {
-          TimerOutput::Scope t(computing_timer, "initialisation");
-          initialize_fields();
-        }
-        if (first_level < willmore_parameters.mesh.finest_level)
-          start = coarse_start_value();
+        level_parameters = level_parameters.for_finest_level(first_level);
+        discretization.start_at_level(first_level);
+        create_scheme(level_parameters);
       }
+    {
+      TimerOutput::Scope t(computing_timer, "mesh: initial");
+      discretization.create_mesh(setup.signed_distance.get(),
+                                 level_parameters.model.epsilon);
+    }
+    TimerOutput::Scope t(computing_timer, "initialisation");
+    initialize_fields();
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::run_time_loops()
+  {
+    BlockVector start;
+    if (!willmore_parameters.checkpoint.resume &&
+        level_parameters.mesh.finest_level <
+          willmore_parameters.mesh.finest_level)
+      start = coarse_start_value();
     // the scheme of the finest level exists only now
-    TimeLoop<dim> time_loop(TimeLoop<dim>::Settings::from(willmore_parameters,
-                                                          setup.program_name),
+    TimeLoop<dim> time_loop(time_loop_settings(willmore_parameters),
                             discretization,
                             *scheme,
                             *this,
@@ -109,9 +142,22 @@ namespace PhaseField
       time_loop.resume(solution);
     else
       time_loop.run(solution, start.n_blocks() > 0 ? &start : nullptr);
-    computing_timer.print_summary();
-    print_peak_memory(pcout, mpi_communicator);
-    discretization.print_partition_balance(pcout);
+  }
+
+
+
+  template <int dim>
+  typename TimeLoop<dim>::Settings
+  PhaseFieldProblem<dim>::time_loop_settings(
+    const WillmoreParameters &parameters) const
+  {
+    typename TimeLoop<dim>::Settings settings =
+      TimeLoop<dim>::Settings::from(parameters, setup.program_name);
+    const Checkpoint::Parameters own = own_checkpoint_parameters();
+    settings.checkpoint_parameters.insert(settings.checkpoint_parameters.end(),
+                                          own.begin(),
+                                          own.end());
+    return settings;
   }
 
 

@@ -82,6 +82,34 @@ namespace PhaseField
 
 
 
+  Checkpoint::Parameters
+  RestorationProblem::own_checkpoint_parameters() const
+  {
+    const auto box = [](const Box2D &b) {
+      return b.empty() ? std::string() :
+                         Checkpoint::exact_values(b.lower) + ", " +
+                           Checkpoint::exact_values(b.upper);
+    };
+    Checkpoint::Parameters recorded = {
+      {"Restoration / Eta", Checkpoint::exact_value(restoration.eta)},
+      {"Restoration / Region", box(restoration.region)},
+      {"Restoration / Damage", box(restoration.damage)}};
+    const GeometryParameters &geometry = willmore_parameters.geometry;
+    if (geometry.shape == "image")
+      {
+        recorded.emplace_back("Geometry / Shape", "image");
+        recorded.emplace_back("Geometry / Image file", restoration.image_file);
+        recorded.emplace_back("Geometry / Threshold",
+                              Checkpoint::exact_value(restoration.threshold));
+      }
+    else
+      for (const auto &entry : Checkpoint::geometry_parameters(geometry))
+        recorded.push_back(entry);
+    return recorded;
+  }
+
+
+
   void
   RestorationProblem::setup_fixed_u()
   {

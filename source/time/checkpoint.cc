@@ -297,6 +297,43 @@ namespace PhaseField
 
 
     std::string
+    exact_value(const double value)
+    {
+      std::ostringstream text;
+      text.precision(std::numeric_limits<double>::max_digits10);
+      text << value;
+      return text.str();
+    }
+
+
+
+    std::string
+    exact_values(const std::vector<double> &values)
+    {
+      std::string text;
+      for (const double value : values)
+        text += (text.empty() ? "" : ", ") + exact_value(value);
+      return text;
+    }
+
+
+
+    Parameters
+    geometry_parameters(const GeometryParameters &geometry)
+    {
+      const std::string subsection = geometry.subsection + " / ";
+      return {{subsection + "Shape", geometry.shape},
+              {subsection + "Center", exact_values(geometry.center)},
+              {subsection + "Second center",
+               exact_values(geometry.second_center)},
+              {subsection + "Radius", exact_value(geometry.radius)},
+              {subsection + "Sizes", exact_values(geometry.sizes)},
+              {subsection + "Expression", geometry.expression}};
+    }
+
+
+
+    std::string
     mesh_filename(const std::string &path)
     {
       return path + "/" + mesh_base_filename;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function.h>
 #include <memory>
+#include <optional>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/geometry/huffman_labeling.h>
 #include <phasefield/geometry/images.h>
@@ -10,6 +11,7 @@
 #include <phasefield/problems/phase_field_problem.h>
 #include <phasefield/schemes/mismatch_term.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace PhaseField
@@ -58,10 +60,6 @@ namespace PhaseField
     /** @p parameters must outlive the problem. */
     explicit ContourProblem(const ContourParameters &parameters);
 
-    /** All levels; throws on failure. */
-    void
-    run() override;
-
     /** One step of Algorithm 6.1 (nested tau/2, mismatch tau, nested tau/2). */
     StepReport
     advance(TimeSteppingScheme<dim> &scheme,
@@ -103,6 +101,17 @@ namespace PhaseField
     std::vector<double>
     checkpoint_data() const override;
 
+    /**
+     * The parameters that give the state its meaning, beyond
+     * willmore_flow's: the weights (`Model / Willmore weight`, `Area
+     * weight`, `Mismatch weight`), the levels up to the current one
+     * (`Multilevel / Levels`: later levels may be added or removed on
+     * resume) and the target (`Target / Shape` with its numbers, or
+     * `Image file` and `Maximum label`).
+     */
+    Checkpoint::Parameters
+    own_checkpoint_parameters() const override;
+
     /** The energy history of the level from checkpoint_data(). */
     void
     after_load(BlockVector               &state,
@@ -123,7 +132,60 @@ namespace PhaseField
     typename MismatchTerm<dim>::Evaluation
     mismatch(const BlockVector &state) const;
 
+  protected:
+    /**
+     * The first level of `Multilevel / Levels`, or with `Checkpoint /
+     * Resume` the level of the checkpoint (resumed_level_index()).
+     */
+    void
+    set_first_level() override;
+
+    /** The base's header and the levels and weights. */
+    void
+    print_header() const override;
+
+    /**
+     * The levels from the first one on: one scheme and one TimeLoop per
+     * level (the first one resumed with `Checkpoint / Resume`), the
+     * transition between them (move_to_level()) and the labelings at the
+     * end of each.
+     */
+    void
+    run_time_loops() override;
+
   private:
+    /** The sub-steps of Algorithm 6.1, in their order. */
+    enum class SubStep
+    {
+      first_nested_step,
+      mismatch_step,
+      second_nested_step
+    };
+
+    /**
+     * One level's TimeLoop from the last step @p step at @p time: run()
+     * on the first level, resume() on the level of a checkpoint,
+     * continue_run() otherwise. A step that fails after all halvings,
+     * or in which a solver throws a deal.II exception, throws a
+     * std::runtime_error (exit status 1, as other runtime failures) whose
+     * message names the step, the sub-step of Algorithm 6.1 that failed
+     * and the parameters to change (step_failure_message()).
+     */
+    void
+    run_level(TimeLoop<dim>     &time_loop,
+              const unsigned int index,
+              const unsigned int step,
+              const double       time);
+
+    /**
+     * The message of step @p step that failed: the sub-step of its last
+     * attempt that did not finish, the parameters that decide whether it
+     * converges, and @p reason (TimeLoop's message or the solver's).
+     */
+    std::string
+    step_failure_message(const unsigned int step,
+                         const std::string &reason) const;
+
     /** Entries of checkpoint_data() before the energy history. */
     static constexpr unsigned int n_level_entries = 2;
 
@@ -170,7 +232,10 @@ namespace PhaseField
     ghosted_u(const BlockVector &state) const;
 
     const ContourParameters &parameters;
-    unsigned int             level_index = 0;
+    /** The index in `Multilevel / Levels` of the level the run starts on. */
+    unsigned int first_level_index = 0;
+    /** The index in `Multilevel / Levels` of the current level. */
+    unsigned int level_index = 0;
     /**
      * The mismatch j of the current level (its pixel grid and target
      * labeling), whose gradient the explicit step of Algorithm 6.1 takes.
@@ -183,6 +248,12 @@ namespace PhaseField
      * error) after every step of the current level.
      */
     std::vector<double> criterion_history;
+    /**
+     * The sub-step of Algorithm 6.1 in which the last attempt of advance()
+     * stopped (it did not converge, or a solver threw) and the step size
+     * of that attempt; empty after an attempt that converged.
+     */
+    std::optional<std::pair<SubStep, double>> unfinished_sub_step;
   };
 } // namespace PhaseField
 

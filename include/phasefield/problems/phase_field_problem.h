@@ -10,6 +10,7 @@
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/outer_energy.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
+#include <phasefield/time/checkpoint.h>
 #include <phasefield/time/time_loop.h>
 #include <string>
 
@@ -33,6 +34,12 @@ namespace PhaseField
      * Run the whole simulation: from the initial shape, or with
      * `Checkpoint / Resume` from the newest checkpoint in the output
      * directory (TimeLoop::resume()). Throws on failure.
+     *
+     * A template method: the set-up common to every program (output
+     * directory, set_first_level(), the scheme, print_header(), the
+     * initial mesh and fields unless resumed) and the final summary
+     * (timers, peak memory, partition balance) are here once, and
+     * run_time_loops() in between is what a program changes.
      */
     virtual void
     run();
@@ -62,6 +69,15 @@ namespace PhaseField
       OuterEnergy outer_energy;
       /** Narrow-band hysteresis (Discretization::Settings). */
       double coarsening_band_factor = 1;
+      /**
+       * The finest level of all meshes of the run, if finer than `Mesh /
+       * Finest level` of the parameters (shape from contour: the last of
+       * `Multilevel / Levels`); 0: that of the parameters. The mesh starts
+       * on the level of set_first_level() (Discretization::
+       * start_at_level()), and Discretization::refine_to_level() moves it
+       * up to this one.
+       */
+      unsigned int finest_level = 0;
     };
 
   protected:
@@ -83,8 +99,46 @@ namespace PhaseField
     create_scheme(const WillmoreParameters &parameters);
 
     /** The first lines of the log: what runs, with which solver. */
-    void
+    virtual void
     print_header() const;
+
+    /**
+     * The problem's own parameters that change the meaning of its state,
+     * which a checkpoint records and a resume compares (refused unless
+     * listed in `Checkpoint / Allow parameter change`), beyond those of
+     * TimeLoop::Settings::from(). The default: none.
+     */
+    virtual Checkpoint::Parameters
+    own_checkpoint_parameters() const
+    {
+      return {};
+    }
+
+    /**
+     * The TimeLoop settings of @p parameters for this program, with
+     * own_checkpoint_parameters() among the recorded parameters.
+     */
+    typename TimeLoop<dim>::Settings
+    time_loop_settings(const WillmoreParameters &parameters) const;
+
+    /**
+     * Hook of run(), after the output directory exists and before the
+     * scheme is made: set level_parameters to the parameters of the level
+     * the run starts on. The default keeps willmore_parameters (a coarse
+     * start level is the business of the initial state, not of a resume).
+     */
+    virtual void
+    set_first_level();
+
+    /**
+     * Hook of run(), after the initial fields are set (or, with
+     * `Checkpoint / Resume`, before anything is loaded): the TimeLoop(s)
+     * of the run. The default is one TimeLoop on willmore_parameters,
+     * whose step 1 starts from coarse_start_value() if the initial state
+     * is on a coarse start level, or which resumes from the checkpoint.
+     */
+    virtual void
+    run_time_loops();
 
     /**
      * Nested iteration for the first step (`Time stepping / Coarse start
@@ -133,6 +187,14 @@ namespace PhaseField
     std::unique_ptr<TimeSteppingScheme<dim>> scheme;
 
   private:
+    /**
+     * The mesh around the initial shape and the initial fields, on the
+     * coarse start level (WillmoreParameters::start_level()) of
+     * level_parameters if it has one, with the scheme of that level.
+     */
+    void
+    create_initial_state();
+
     /**
      * Step 1 on the level of level_parameters from the initial fields into
      * @p start (which holds the start value). Returns whether it

@@ -49,6 +49,17 @@ namespace PhaseField
     after_load(BlockVector               &state,
                const std::vector<double> &problem_data) override;
 
+  protected:
+    /**
+     * The parameters that give the state its meaning, beyond
+     * willmore_flow's: `Restoration / Eta` (the weight of the area term),
+     * `Region` and `Damage`, and the input image (`Geometry / Shape` with
+     * its numbers, or `Image file` and `Threshold`): the fixed values
+     * outside the region are those of the input.
+     */
+    Checkpoint::Parameters
+    own_checkpoint_parameters() const override;
+
   private:
     void
     initialize_fields() override;

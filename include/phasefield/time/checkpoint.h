@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <phasefield/core/linear_algebra.h>
+#include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
 #include <string>
 #include <utility>
@@ -75,6 +76,28 @@ namespace PhaseField
      * value) pairs; the first is the program (`Program`).
      */
     using Parameters = std::vector<std::pair<std::string, std::string>>;
+
+    /**
+     * @p value as a checkpoint records it: with all digits
+     * (max_digits10), so that a resume compares it to the last bit.
+     */
+    std::string
+    exact_value(const double value);
+
+    /** @p values as exact_value()s separated by `, ` (a comma list). */
+    std::string
+    exact_values(const std::vector<double> &values);
+
+    /**
+     * The recorded parameters of the shape @p geometry, named in its
+     * subsection (`Geometry` or `Target`): `Shape` and the numbers and
+     * expression the shapes are made from (`Center`, `Second center`,
+     * `Radius`, `Sizes`, `Expression`). For programs whose state keeps
+     * its meaning only with its shape (edge restoration: the fixed
+     * values; shape from contour: the target labeling).
+     */
+    Parameters
+    geometry_parameters(const GeometryParameters &geometry);
 
     /**
      * Write the checkpoint of @p state (the fields on @p discretization),
