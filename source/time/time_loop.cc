@@ -95,21 +95,17 @@ namespace PhaseField
     s.checkpoint_interval      = parameters.checkpoint.interval;
     s.extrapolated_start       = parameters.model.extrapolated_start;
     s.allowed_changes          = parameters.checkpoint.allowed_changes;
-    const auto exact           = [](const double value) {
-      std::ostringstream text;
-      text.precision(std::numeric_limits<double>::max_digits10);
-      text << value;
-      return text.str();
-    };
-    s.checkpoint_parameters = {
-      {"Program", program_name},
-      {"Dimension", std::to_string(parameters.dimension)},
-      {"Mesh / Finest level", std::to_string(parameters.mesh.finest_level)},
-      {"Mesh / Coarsest level", std::to_string(parameters.mesh.coarsest_level)},
-      {"Mesh / Adaptive", parameters.mesh.adaptive ? "true" : "false"},
-      {"Phase field / Epsilon", exact(parameters.model.epsilon)},
-      {"Time stepping / Scheme", parameters.model.scheme.name},
-      {"Time stepping / Inner tau", exact(parameters.model.inner_tau)}};
+    s.checkpoint_parameters    = {
+         {"Program", program_name},
+         {"Dimension", std::to_string(parameters.dimension)},
+         {"Mesh / Finest level", std::to_string(parameters.mesh.finest_level)},
+         {"Mesh / Coarsest level", std::to_string(parameters.mesh.coarsest_level)},
+         {"Mesh / Adaptive", parameters.mesh.adaptive ? "true" : "false"},
+         {"Phase field / Epsilon",
+          Checkpoint::exact_value(parameters.model.epsilon)},
+         {"Time stepping / Scheme", parameters.model.scheme.name},
+         {"Time stepping / Inner tau",
+          Checkpoint::exact_value(parameters.model.inner_tau)}};
     return s;
   }
 
