@@ -44,24 +44,20 @@ namespace PhaseField
   public:
     /**
      * GMRES iterations with an earlier factorisation above which the next
-     * solve factorises its matrix (the reduced systems). 4 rather than 8:
-     * the quarter circle at h = 2^-10 took 40 s instead of 47-49 s
-     * (doc/benchmarks.md, "The refactorisation threshold").
+     * solve factorises its matrix (the reduced systems); measured in
+     * doc/benchmarks.md, "The refactorisation threshold".
      */
     static constexpr unsigned int default_refactorization_threshold = 4;
 
     /**
      * Iterative type with set_persistent_matrices(): the multigrid
      * hierarchies of solve_product_form() are kept for the following
-     * solves (later Newton iterations and time steps on the same mesh)
-     * while the interface has not moved (interface_mode_tolerance), and a
-     * solve with them may take this factor times the iterations of the
-     * first solve after their set-up (scaled up by the ratio of the
-     * tolerances in decades beyond free_start_decades where the later one
-     * is tighter); beyond, the hierarchy is set up anew and the solve
-     * repeated. The set-up
-     * (aggregation and Galerkin products) was a fifth of the time of the
-     * 3D sphere at level 6 (doc/benchmarks.md, "Keeping the multigrid
+     * solves on the same mesh while the interface has not moved
+     * (interface_mode_tolerance), and a solve with them may take this
+     * factor times the iterations of the first solve after their set-up
+     * (scaled by the ratio of the tolerances in decades beyond
+     * free_start_decades); beyond, the hierarchy is set up anew and the
+     * solve repeated (doc/benchmarks.md, "Keeping the multigrid
      * hierarchy").
      */
     static constexpr double multigrid_reuse_factor = 1.5;
@@ -70,28 +66,18 @@ namespace PhaseField
      * The decades of residual reduction that a preconditioned CG solve
      * from zero gains at almost no cost, for the iteration model of the
      * kept hierarchies: a solve to D decades takes about r (D - 0.5)
-     * iterations. First step of the 3D sphere (eps = 4h, tau = 0.03h,
-     * 2 ranks), iterations per decade: level 7 4 for 1 decade, 32 for
-     * 4.7, 35-41 for 6 (per decade beyond the first half: 8, 7.6,
-     * 6.4-7.5); level 6: 2 for 1, 16-17 for 3.4-3.7 (with the hierarchy of
-     * the previous Newton iteration), 26-27 for 6 (4, 5.3-5.5, 4.7-4.9);
-     * the others with a new hierarchy. Counted in whole decades, the loose
-     * first solve of a Newton method (one decade, ForcingTerm::max_forcing)
-     * promised 4 per decade at level 7, and the kept hierarchy was given
-     * up in the next tight solve of every first step (level 7: 28 of 95
-     * CG iterations spent on the abandoned solve).
+     * iterations (doc/benchmarks.md, "Where the CG growth per level comes
+     * from; the kept hierarchy's iteration model").
      */
     static constexpr double free_start_decades = 0.5;
 
     /**
      * Largest change of the interface mode 1 - V^2 (SchurPreconditioner)
-     * since the set-up of a kept hierarchy: the near null space of its
-     * coarse levels holds the mode of the set-up. For V = tanh(d/eps),
+     * since the set-up of a kept hierarchy: for V = tanh(d/eps),
      * |d/dd (1 - V^2)| <= 0.77/eps, so 0.2 allows the interface to move by
-     * at least a quarter of eps. Without this test and the iteration cap
-     * of multigrid_reuse_factor, the cube's first step at level 7, where
-     * the edges round off, took 1774 instead of 733 CG iterations (406 s
-     * instead of 194 s); with both, 669 (172 s).
+     * at least a quarter of eps (doc/benchmarks.md, "Keeping the multigrid
+     * hierarchy": without it the level-7 cube's first step took 1774
+     * instead of 669 CG iterations).
      */
     static constexpr double interface_mode_tolerance = 0.2;
 

@@ -18,17 +18,10 @@ namespace PhaseField
   /**
    * Chebyshev sweeps of the cycles inside the product G^-1 M G^-1
    * (SchurPreconditioner). There the cycle's error matters in the norm of
-   * M, not of G: a cycle B with I - BG small in the G-norm can be far
-   * from G^-1 in the M-norm, by up to the square root of the condition
-   * number of M^-1 G, which grows with the level. Smoothing reduces this
-   * part of the error. Measured on the sphere's first step (r = 0.35,
-   * eps = 4h, tau = 0.03h, ttau = h^2, 2 ranks), CG iterations to 1e-6 of
-   * Newton systems 1-3 (at level 8: 1-2 with 3 sweeps, 1-4 with the
-   * others) at levels 6 / 7 / 8: 3 sweeps 26-27 / 35-41 /
-   * 67-68; 5 sweeps 23-25 / 28-30 / 40-46; 6 sweeps 22-25 / 27-30 /
-   * 37-43; 8 sweeps 22-24 / 27-29 / 35-39, at about the same time per
-   * solve for 3, 5 and 6 (doc/benchmarks.md, "Smoothing inside the
-   * product").
+   * M, not of G, and more smoothing reduces the part that the G-norm
+   * hides: 6 sweeps took 37-43 CG iterations per Newton system of the
+   * level-8 sphere against 67-68 with 3 (doc/benchmarks.md, "Smoothing
+   * inside the product").
    */
   constexpr unsigned int schur_smoother_sweeps = 6;
 
