@@ -20,13 +20,21 @@ run() {
 }
 for prm in parameter_files/*/*.prm; do
   program=$(basename "$(dirname "$prm")")
-  case "$program" in
-    biharmonic_flow)
+  case "$program/$(basename "$prm")" in
+    biharmonic_flow/*)
       run "$build_dir/$program" "$prm" --set "Convergence/Levels=3,4" \
         --set "Output directory=$output/run" ;;
-    shape_from_contour)
+    shape_from_contour/*)
       run "$build_dir/$program" "$prm" --set "Multilevel/Levels=5" \
         --set "Multilevel/Steps per level=1" \
+        --set "Output directory=$output/run" ;;
+    willmore_flow/al_cube_*)
+      # the augmented Lagrangian's cube at level 5 vanishes at tau and is
+      # taken at tau/2 (Largest inside change factor): one step
+      # shows that the file runs, in 20 s instead of 57 s for two
+      run "$build_dir/$program" "$prm" --set "Mesh/Finest level=5" \
+        --set "Time stepping/Number of steps=1" \
+        --set "Phase field/Epsilon=4*h" \
         --set "Output directory=$output/run" ;;
     *)
       run "$build_dir/$program" "$prm" --set "Mesh/Finest level=5" \

@@ -14,6 +14,7 @@
 // measure 0). A scheme whose jumps were not rejected, or that halved
 // converged steps for another reason, gives other rows.
 
+#include "scalar_test_scheme.h"
 #include "tests.h"
 
 #include <iostream>
@@ -35,14 +36,13 @@ namespace
    * large ones.
    */
   template <int dim, bool vanish>
-  class JumpingToy : public TimeSteppingScheme<dim>
+  class JumpingToy : public Testing::ScalarTestScheme<dim>
   {
   public:
     JumpingToy(const SchemeSettings             &settings,
                const Discretization<dim>        &discretization,
                const dealii::ConditionalOStream &pcout)
-      : settings(settings)
-      , discretization(discretization)
+      : Testing::ScalarTestScheme<dim>(settings, discretization)
     {
       (void)pcout;
     }
@@ -51,25 +51,6 @@ namespace
     name() const override
     {
       return vanish ? "toy vanish" : "toy rise";
-    }
-
-    std::vector<std::string>
-    field_names() const override
-    {
-      return {"U"};
-    }
-
-    std::string
-    linear_solver_description() const override
-    {
-      return "none";
-    }
-
-    void
-    initialize(BlockVector &state, const double tau) override
-    {
-      (void)tau;
-      discretization.distribute_constraints(state);
     }
 
     StepReport
@@ -85,46 +66,10 @@ namespace
           else
             state.block(0) *= 0.5;
         }
-      discretization.distribute_constraints(state);
+      this->discretization.distribute_constraints(state);
       StepReport report;
       report.converged = true;
       return report;
-    }
-
-    void
-    before_remesh() override
-    {}
-
-    void
-    after_remesh(BlockVector &state, const double tau) override
-    {
-      (void)state;
-      (void)tau;
-    }
-
-    void
-    reset_solver() override
-    {}
-
-    Energies
-    energies(const BlockVector &state) const override
-    {
-      return phase_field_energies(discretization.get_operators(),
-                                  state.block(0),
-                                  settings.epsilon);
-    }
-
-    unsigned int
-    n_factorizations() const override
-    {
-      return 0;
-    }
-
-    void
-    curvature(const BlockVector &state, Vector &curvature) const override
-    {
-      (void)state;
-      curvature = 0;
     }
 
     bool
@@ -138,10 +83,6 @@ namespace
     {
       return energies.area;
     }
-
-  private:
-    const SchemeSettings       settings;
-    const Discretization<dim> &discretization;
   };
 
   template <int dim>

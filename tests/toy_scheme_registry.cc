@@ -10,6 +10,7 @@
 // its own parameter), if its description is not in the documentation of
 // `Time stepping / Scheme`, or if the registry does not check its terms.
 
+#include "scalar_test_scheme.h"
 #include "tests.h"
 
 #include <phasefield/schemes/energies.h>
@@ -55,21 +56,21 @@ namespace
   };
 
   /**
-   * Step 1 of the recipe: the scheme class. Its state is U alone; a step
+   * Step 1 of the recipe: the scheme class. Its state is U alone, and the
+   * pure virtual functions that a scheme of U alone without a solver
+   * implements the same way come from Testing::ScalarTestScheme; a step
    * is ToyParameters::sweeps reaction steps (step 4: counted in its own
    * column toy_sweeps).
    */
   template <int dim>
-  class ToyScheme : public TimeSteppingScheme<dim>
+  class ToyScheme : public Testing::ScalarTestScheme<dim>
   {
   public:
-
     ToyScheme(const SchemeSettings             &settings,
               const Discretization<dim>        &discretization,
               const dealii::ConditionalOStream &pcout)
-      : settings(settings)
+      : Testing::ScalarTestScheme<dim>(settings, discretization)
       , parameters(settings.own_parameters<ToyParameters>())
-      , discretization(discretization)
     {
       (void)pcout;
     }
@@ -78,25 +79,6 @@ namespace
     name() const override
     {
       return "toy";
-    }
-
-    std::vector<std::string>
-    field_names() const override
-    {
-      return {"U"};
-    }
-
-    std::string
-    linear_solver_description() const override
-    {
-      return "none";
-    }
-
-    void
-    initialize(BlockVector &state, const double tau) override
-    {
-      (void)tau;
-      discretization.distribute_constraints(state);
     }
 
     StepReport
@@ -109,47 +91,11 @@ namespace
       for (unsigned int sweep = 0; sweep < parameters.sweeps; ++sweep)
         for (double &u : state.block(0))
           u += parameters.rate * u * (1 - u * u);
-      discretization.distribute_constraints(state);
+      this->discretization.distribute_constraints(state);
       StepReport report;
       report.converged = true;
       report.add_count("toy_sweeps", parameters.sweeps);
       return report;
-    }
-
-    void
-    before_remesh() override
-    {}
-
-    void
-    after_remesh(BlockVector &state, const double tau) override
-    {
-      (void)state;
-      (void)tau;
-    }
-
-    void
-    reset_solver() override
-    {}
-
-    Energies
-    energies(const BlockVector &state) const override
-    {
-      return phase_field_energies(discretization.get_operators(),
-                                  state.block(0),
-                                  settings.epsilon);
-    }
-
-    unsigned int
-    n_factorizations() const override
-    {
-      return 0;
-    }
-
-    void
-    curvature(const BlockVector &state, Vector &curvature) const override
-    {
-      (void)state;
-      curvature = 0;
     }
 
     std::vector<std::string>
@@ -162,9 +108,7 @@ namespace
     }
 
   private:
-    const SchemeSettings       settings;
-    const ToyParameters        parameters;
-    const Discretization<dim> &discretization;
+    const ToyParameters parameters;
   };
 
   /** Step 5 of the recipe: the toy's registry entry. */

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <boost/serialization/string.hpp>
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
@@ -255,9 +256,10 @@ namespace PhaseField
 
       /**
        * Compare the line `<name> = <value>` @p entry of the metadata file
-       * @p metadata with this run's @p parameters.
+       * @p metadata with this run's @p parameters; returns whether it
+       * differs by an allowed change.
        */
-      void
+      bool
       verify_parameter(const std::string              &entry,
                        const std::string              &metadata,
                        const Parameters               &parameters,
@@ -274,7 +276,7 @@ namespace PhaseField
                        parameters.end(),
                        [&](const auto &p) { return p.first == name; });
         if (current == parameters.end() || current->second == saved)
-          return;
+          return false;
         const std::string difference =
           "<" + name + "> = " + saved + " in the checkpoint (<" + metadata +
           ">), but " + current->second + " in this run";
@@ -284,7 +286,7 @@ namespace PhaseField
             std::cout << "Warning: resuming with " << difference
                       << " (allowed by <Checkpoint / Allow parameter change>)."
                       << std::endl;
-            return;
+            return true;
           }
         throw InputError("Cannot resume: " + difference +
                          ". Resume with the parameters of the run that wrote "
@@ -381,12 +383,13 @@ namespace PhaseField
 
 
 
-    void
+    bool
     verify(const std::string              &path,
            const Parameters               &parameters,
            const std::vector<std::string> &allowed_changes,
            const MPI_Comm                  mpi_communicator)
     {
+      bool changed = false;
       run_on_root(mpi_communicator, [&]() {
         const std::string metadata = path + "/" + metadata_filename;
         std::ifstream     in(metadata);
@@ -399,16 +402,19 @@ namespace PhaseField
                            "<Checkpoint / Resume> = false.");
         while (std::getline(in, line))
           if (line.rfind("parameter ", 0) == 0)
-            verify_parameter(line.substr(10),
-                             metadata,
-                             parameters,
-                             allowed_changes);
+            changed = verify_parameter(line.substr(10),
+                                       metadata,
+                                       parameters,
+                                       allowed_changes) ||
+                      changed;
           else if (line.rfind("file ", 0) == 0)
             verify_file(line.substr(5), path, metadata);
           else
             throw InputError("The checkpoint file <" + metadata +
                              "> is damaged (line <" + line + ">).");
       });
+      return dealii::Utilities::MPI::max(static_cast<int>(changed),
+                                         mpi_communicator) != 0;
     }
 
 

@@ -241,10 +241,15 @@ namespace PhaseField
     const std::string  path =
       Checkpoint::find_last(settings.output_directory, comm);
     // before p4est or anything else reads the files
-    Checkpoint::verify(path,
-                       settings.checkpoint_parameters,
-                       settings.allowed_changes,
-                       comm);
+    changed_on_resume = Checkpoint::verify(path,
+                                           settings.checkpoint_parameters,
+                                           settings.allowed_changes,
+                                           comm);
+    if (changed_on_resume && scheme.has_energy_law())
+      pcout << "The energy law is not checked in the first step after the "
+               "checkpoint: its state belongs to the parameters it was "
+               "written with."
+            << std::endl;
     const Checkpoint::State saved = Checkpoint::read_state(path, comm);
     if (saved.step_offset == 0)
       check_time(saved, path);
@@ -293,7 +298,8 @@ namespace PhaseField
           attempt = predict_start_value(step, state, tried_tau);
         const StepResult result =
           advance_on_resolving_mesh(step, state, attempt);
-        const double tau = result.tau;
+        changed_on_resume = false;
+        const double tau  = result.tau;
         if (extrapolates())
           predictor.record(old_state, state, tau, scheme.start_extrapolation());
         if (settings.regrow_step_size)
@@ -603,7 +609,8 @@ namespace PhaseField
   {
     std::ostringstream why;
     why << std::setprecision(4);
-    if (scheme.has_energy_law() && client.energy_law_applies())
+    if (scheme.has_energy_law() && client.energy_law_applies() &&
+        !changed_on_resume)
       {
         const double before = scheme.energy_law_energy(old_energies);
         const double rise   = scheme.energy_law_energy(energies) +

@@ -124,9 +124,10 @@ namespace PhaseField
      * InputError naming it), and every recorded parameter must have the
      * value in @p parameters, unless its name is in @p allowed_changes
      * (then a warning is printed). Throws InputError on every rank.
+     * Returns on every rank whether an allowed change was found.
      * Collective.
      */
-    void
+    bool
     verify(const std::string              &path,
            const Parameters               &parameters,
            const std::vector<std::string> &allowed_changes,

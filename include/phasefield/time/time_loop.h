@@ -525,6 +525,13 @@ namespace PhaseField
      * of one step and the start of the next.
      */
     std::optional<Energies> state_energies;
+    /**
+     * Whether the last checkpoint loaded was written with other values of
+     * its recorded parameters (Checkpoint / Allow parameter change): the
+     * energy of its state belongs to those, and the energy law is not
+     * checked in the first step after it (rejection()).
+     */
+    bool changed_on_resume = false;
     /** The history of the last steps (if extrapolates()). */
     StartValuePredictor predictor;
     /**
