@@ -20,12 +20,20 @@ namespace Testing
     /** Finest mesh size of the band. */
     static constexpr double h = 1. / (dim == 2 ? 32 : 16);
 
-    /** The mesh, with L integrated by the rule @p stiffness_quadrature. */
+    /**
+     * The mesh, with L integrated by the rule @p stiffness_quadrature and
+     * represented by @p backend, with the boundary conditions @p boundary.
+     */
     explicit AdaptiveTestMesh(
       const PhaseField::StiffnessQuadrature stiffness_quadrature =
-        PhaseField::StiffnessQuadrature::gauss)
+        PhaseField::StiffnessQuadrature::gauss,
+      const PhaseField::OperatorBackend backend =
+        PhaseField::OperatorBackend::assembled,
+      const PhaseField::BoundaryConditions boundary =
+        PhaseField::BoundaryConditions::natural)
       : sphere(center(), 0.3)
-      , discretization(settings(stiffness_quadrature), MPI_COMM_WORLD)
+      , discretization(settings(stiffness_quadrature, backend, boundary),
+                       MPI_COMM_WORLD)
       , dof_handler(discretization.get_dof_handler())
       , constraints(discretization.get_constraints())
       , operators(discretization.get_operators())
@@ -44,9 +52,13 @@ namespace Testing
 
     /** Levels 2 to 5 (2D) or 4 (3D), band of 1.5 eps. */
     static typename PhaseField::Discretization<dim>::Settings
-    settings(const PhaseField::StiffnessQuadrature stiffness_quadrature)
+    settings(const PhaseField::StiffnessQuadrature stiffness_quadrature,
+             const PhaseField::OperatorBackend     backend,
+             const PhaseField::BoundaryConditions  boundary)
     {
       typename PhaseField::Discretization<dim>::Settings s{};
+      s.backend                   = backend;
+      s.boundary_conditions       = boundary;
       s.mesh.coarsest_level       = 2;
       s.mesh.finest_level         = dim == 2 ? 5 : 4;
       s.mesh.adaptive             = true;

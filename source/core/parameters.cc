@@ -563,11 +563,14 @@ namespace PhaseField
     prm.declare_entry(
       "Type",
       "auto",
-      Patterns::Selection("auto|direct|iterative"),
+      Patterns::Selection("auto|direct|iterative|matrix-free"),
       "How the reduced Newton system in V is solved. direct: MUMPS "
       "(through Trilinos Amesos); iterative: CG preconditioned with "
-      "algebraic multigrid (memory linear in the unknowns); auto: direct in "
-      "2D, iterative in 3D.");
+      "algebraic multigrid (ML) on the assembled stiffness matrix (memory "
+      "linear in the unknowns); matrix-free: CG with the stiffness operator "
+      "applied cell by cell and preconditioned with geometric multigrid "
+      "(no matrix is stored; the nested scheme only); auto: direct in 2D, "
+      "iterative in 3D.");
     prm.declare_entry("Tolerance",
                       "1e-10",
                       Patterns::Double(0.),
@@ -586,11 +589,14 @@ namespace PhaseField
   {
     prm.enter_subsection("Linear solver");
     const std::string t = prm.get("Type");
-    type                = (t == "direct"    ? LinearSolverType::direct :
-                           t == "iterative" ? LinearSolverType::iterative :
-                                              LinearSolverType::automatic);
-    relative_tolerance  = prm.get_double("Tolerance");
-    max_iterations      = prm.get_integer("Maximum iterations");
+    type =
+      (t == "direct"                          ? LinearSolverType::direct :
+       t == "iterative" || t == "matrix-free" ? LinearSolverType::iterative :
+                                                LinearSolverType::automatic);
+    backend            = t == "matrix-free" ? OperatorBackend::matrix_free :
+                                              OperatorBackend::assembled;
+    relative_tolerance = prm.get_double("Tolerance");
+    max_iterations     = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
   }
 

@@ -115,10 +115,22 @@ namespace PhaseField
                                       const MPI_Comm  mpi_communicator)
     : settings(settings)
     , mpi_communicator(mpi_communicator)
-    , triangulation(mpi_communicator, mesh_smoothing<dim>())
+    , triangulation(
+        mpi_communicator,
+        mesh_smoothing<dim>(),
+        settings.backend == OperatorBackend::matrix_free ?
+          parallel::distributed::Triangulation<
+            dim>::construct_multigrid_hierarchy :
+          parallel::distributed::Triangulation<dim>::default_setting)
     , fe(1)
     , dof_handler(triangulation)
-  {}
+  {
+    AssertThrow(settings.backend == OperatorBackend::assembled ||
+                  settings.boundary_conditions != BoundaryConditions::periodic,
+                ExcMessage("`Linear solver / Type = matrix-free` does not "
+                           "support periodic boundary conditions; use "
+                           "`iterative` or `direct`."));
+  }
 
 
 
@@ -172,6 +184,8 @@ namespace PhaseField
   Discretization<dim>::setup_dofs()
   {
     dof_handler.distribute_dofs(fe);
+    if (settings.backend == OperatorBackend::matrix_free)
+      dof_handler.distribute_mg_dofs();
 
     IndexSet locally_relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
@@ -194,10 +208,15 @@ namespace PhaseField
       }
     constraints.close();
 
+    typename LumpedOperators<dim>::Settings operator_settings;
+    operator_settings.stiffness_quadrature = settings.mesh.stiffness_quadrature;
+    operator_settings.backend              = settings.backend;
+    operator_settings.dirichlet =
+      settings.boundary_conditions == BoundaryConditions::dirichlet;
     operators.reinit(dof_handler,
                      constraints,
                      mpi_communicator,
-                     settings.mesh.stiffness_quadrature);
+                     operator_settings);
   }
 
 

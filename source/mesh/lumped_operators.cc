@@ -17,27 +17,66 @@ namespace PhaseField
                                const MPI_Comm            mpi_communicator,
                                const StiffnessQuadrature stiffness_quadrature)
   {
+    Settings settings;
+    settings.stiffness_quadrature = stiffness_quadrature;
+    reinit(dof_handler, constraints, mpi_communicator, settings);
+  }
+
+
+
+  template <int dim>
+  void
+  LumpedOperators<dim>::reinit(const DoFHandler<dim>           &dof_handler,
+                               const AffineConstraints<double> &constraints,
+                               const MPI_Comm  mpi_communicator,
+                               const Settings &settings)
+  {
+    backend            = settings.backend;
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
-                                               mpi_communicator,
-                                               locally_relevant_dofs);
-    stiffness_backend.matrix.reinit(locally_owned_dofs,
-                                    locally_owned_dofs,
-                                    dsp,
-                                    mpi_communicator);
+    if (backend == OperatorBackend::assembled)
+      {
+        DynamicSparsityPattern dsp(locally_relevant_dofs);
+        DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   locally_owned_dofs,
+                                                   mpi_communicator,
+                                                   locally_relevant_dofs);
+        stiffness_backend.matrix.reinit(locally_owned_dofs,
+                                        locally_owned_dofs,
+                                        dsp,
+                                        mpi_communicator);
+      }
     lumped_mass.reinit(locally_owned_dofs, mpi_communicator);
 
     const double min_cell_mass =
-      assemble(dof_handler, constraints, stiffness_quadrature);
+      assemble(dof_handler, constraints, settings.stiffness_quadrature);
     set_inverse_lumped_mass(constraints,
                             Utilities::MPI::min(min_cell_mass,
                                                 mpi_communicator));
-    stiffness_backend.find_diagonal();
+    if (backend == OperatorBackend::assembled)
+      stiffness_backend.find_diagonal();
+    else
+      matrix_free_backend.reinit(dof_handler,
+                                 constraints,
+                                 lumped_mass,
+                                 {settings.stiffness_quadrature,
+                                  settings.dirichlet});
+  }
+
+
+
+  template <int dim>
+  const TrilinosWrappers::SparseMatrix &
+  LumpedOperators<dim>::stiffness_matrix() const
+  {
+    AssertThrow(backend == OperatorBackend::assembled,
+                ExcMessage(
+                  "This solver needs the assembled stiffness matrix, which "
+                  "`Linear solver / Type = matrix-free` does not store. Use "
+                  "`Linear solver / Type = iterative` or `direct`."));
+    return stiffness_backend.matrix;
   }
 
 
@@ -47,6 +86,7 @@ namespace PhaseField
   LumpedOperators<dim>::release()
   {
     stiffness_backend.clear();
+    matrix_free_backend.clear();
     lumped_mass.clear();
     inverse_lumped_mass.clear();
     std::vector<unsigned int>().swap(constrained_local_indices);
@@ -99,14 +139,16 @@ namespace PhaseField
           min_cell_mass = std::min(min_cell_mass, cell_mass.linfty_norm());
 
           cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 dof_indices,
-                                                 stiffness_backend.matrix);
+          if (backend == OperatorBackend::assembled)
+            constraints.distribute_local_to_global(cell_matrix,
+                                                   dof_indices,
+                                                   stiffness_backend.matrix);
           constraints.distribute_local_to_global(cell_mass,
                                                  dof_indices,
                                                  lumped_mass);
         }
-    stiffness_backend.matrix.compress(VectorOperation::add);
+    if (backend == OperatorBackend::assembled)
+      stiffness_backend.matrix.compress(VectorOperation::add);
     lumped_mass.compress(VectorOperation::add);
     return min_cell_mass;
   }
@@ -145,7 +187,7 @@ namespace PhaseField
     const Vector                   &nodal_weight,
     TrilinosWrappers::SparseMatrix &matrix) const
   {
-    const auto &stiffness = stiffness_backend.matrix;
+    const auto &stiffness = stiffness_matrix();
     if (!share_pattern(matrix, stiffness))
       matrix.copy_from(stiffness);
     const CompressedRows l   = compressed_rows(stiffness);
@@ -171,7 +213,7 @@ namespace PhaseField
     const unsigned int n = nodal_weight.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       diagonal.begin()[i] *= nodal_weight.begin()[i];
-    stiffness_backend.shift(stiffness_factor, diagonal, op);
+    stiffness_operator().shift(stiffness_factor, diagonal, op);
   }
 
 
@@ -224,7 +266,7 @@ namespace PhaseField
   {
     Vector y(x), Ly(x);
     zero_constrained(y);
-    stiffness_backend.vmult(Ly, y);
+    stiffness_operator().vmult(Ly, y);
     return y * Ly;
   }
 

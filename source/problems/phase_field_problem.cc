@@ -17,11 +17,13 @@ namespace PhaseField
     /** The discretisation of the Willmore-flow parameters. */
     template <int dim>
     typename Discretization<dim>::Settings
-    discretization_settings(const MeshParameters                         &mesh,
+    discretization_settings(const WillmoreParameters &parameters,
                             const typename PhaseFieldProblem<dim>::Setup &setup)
     {
+      const MeshParameters                  &mesh = parameters.mesh;
       typename Discretization<dim>::Settings settings;
-      settings.mesh = mesh;
+      settings.mesh    = mesh;
+      settings.backend = parameters.linear_solver.backend;
       settings.mesh.finest_level =
         std::max(mesh.finest_level, setup.finest_level);
       settings.coarsening_band_factor = setup.coarsening_band_factor;
@@ -44,7 +46,7 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , discretization(discretization_settings<dim>(parameters.mesh, setup),
+    , discretization(discretization_settings<dim>(parameters, setup),
                      mpi_communicator)
   {}
 

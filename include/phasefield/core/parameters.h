@@ -302,10 +302,28 @@ namespace PhaseField
     iterative
   };
 
+  /**
+   * How the stiffness operator L and its shifted operators f L + D are
+   * applied and preconditioned (the backend of the operator seam).
+   */
+  enum class OperatorBackend
+  {
+    /** An assembled Trilinos matrix, algebraic multigrid (ML). */
+    assembled,
+    /** Cell by cell (MatrixFree), geometric multigrid (local smoothing). */
+    matrix_free
+  };
+
   /** Subsection `Linear solver`. */
   struct LinearSolverParameters
   {
+    /**
+     * `Type`: auto, direct, iterative (CG with algebraic multigrid on the
+     * assembled L) or matrix-free (type iterative with the matrix-free
+     * backend).
+     */
     LinearSolverType type;
+    OperatorBackend  backend = OperatorBackend::assembled;
     double           relative_tolerance;
     unsigned int     max_iterations;
 

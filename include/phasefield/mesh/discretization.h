@@ -58,6 +58,12 @@ namespace PhaseField
        */
       double             coarsening_band_factor = 1;
       BoundaryConditions boundary_conditions    = BoundaryConditions::natural;
+      /**
+       * The backend of the stiffness operator (LumpedOperators); the
+       * matrix-free one keeps the levels of the mesh for its geometric
+       * multigrid (not with periodic conditions).
+       */
+      OperatorBackend backend = OperatorBackend::assembled;
     };
 
     Discretization(const Settings &settings, const MPI_Comm mpi_communicator);

@@ -9,6 +9,7 @@
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
+#include <phasefield/mesh/matrix_free_stiffness.h>
 #include <phasefield/mesh/stiffness_operator.h>
 #include <phasefield/mesh/trilinos_stiffness.h>
 #include <vector>
@@ -34,8 +35,32 @@ namespace PhaseField
   class LumpedOperators
   {
   public:
+    /** How L is represented. */
+    struct Settings
+    {
+      StiffnessQuadrature stiffness_quadrature = StiffnessQuadrature::gauss;
+      /**
+       * assembled: a Trilinos matrix; matrix_free: MatrixFreeStiffness (no
+       * matrix; the level DoFs of @p dof_handler must be distributed).
+       */
+      OperatorBackend backend = OperatorBackend::assembled;
+      /** Homogeneous Dirichlet conditions on the whole boundary. */
+      bool dirichlet = false;
+    };
+
     /**
-     * Assemble M and L on @p dof_handler (scalar Q1), L with the rule
+     * Assemble M and set up L on @p dof_handler (scalar Q1) as
+     * @p settings say. @p dof_handler and @p constraints must outlive the
+     * operators until release().
+     */
+    void
+    reinit(const dealii::DoFHandler<dim>           &dof_handler,
+           const dealii::AffineConstraints<double> &constraints,
+           const MPI_Comm                           mpi_communicator,
+           const Settings                          &settings);
+
+    /**
+     * reinit() with the assembled backend, L with the rule
      * @p stiffness_quadrature.
      */
     void
@@ -99,17 +124,24 @@ namespace PhaseField
     const StiffnessOperator &
     stiffness_operator() const
     {
+      if (backend == OperatorBackend::matrix_free)
+        return matrix_free_backend;
       return stiffness_backend;
     }
 
     /**
      * The assembled stiffness matrix, for what needs its entries: the
      * direct solvers' matrices (StiffnessSquare, the 3-field Jacobian).
+     * Throws with the matrix-free backend.
      */
     const dealii::TrilinosWrappers::SparseMatrix &
-    stiffness_matrix() const
+    stiffness_matrix() const;
+
+    /** The backend of L. */
+    OperatorBackend
+    get_backend() const
     {
-      return stiffness_backend.matrix;
+      return backend;
     }
 
     /**
@@ -156,8 +188,13 @@ namespace PhaseField
       const dealii::AffineConstraints<double> &constraints,
       const double                             min_cell_mass);
 
-    /** L as an assembled Trilinos matrix. */
+    /** L as an assembled Trilinos matrix (the assembled backend). */
     TrilinosStiffness stiffness_backend;
+
+    /** L cell by cell (the matrix-free backend). */
+    MatrixFreeStiffness<dim> matrix_free_backend;
+
+    OperatorBackend backend = OperatorBackend::assembled;
   };
   /**
    * Epetra's compressed row storage of the locally owned rows of a

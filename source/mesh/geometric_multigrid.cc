@@ -1,0 +1,409 @@
+#include <algorithm>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <deal.II/matrix_free/tools.h>
+#include <deal.II/multigrid/mg_tools.h>
+#include <phasefield/mesh/geometric_multigrid.h>
+
+namespace PhaseField
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** Q1 with 2 points per direction (Gauss or Gauss-Lobatto). */
+    template <int dim, typename Number>
+    using Q1Evaluation = FEEvaluation<dim, 1, 2, 1, Number>;
+
+    /**
+     * Ratio of the largest to the smallest eigenvalue that a smoother
+     * damps (deal.II's step-37: the upper part of the spectrum, which the
+     * coarser levels cannot represent).
+     */
+    constexpr double smoothing_range = 15.;
+
+    /** CG iterations of the largest-eigenvalue estimate of a smoother. */
+    constexpr unsigned int eigenvalue_iterations = 10;
+
+    /**
+     * Relative accuracy of the coarse solve (Chebyshev iteration to this
+     * ratio, as in step-37).
+     */
+    constexpr double multigrid_coarse_accuracy = 1e-3;
+  } // namespace
+
+
+
+  template <int dim, typename CellIterator>
+  void
+  cell_stiffness_matrix(FEValues<dim>      &fe_values,
+                        const CellIterator &cell,
+                        FullMatrix<double> &cell_matrix)
+  {
+    fe_values.reinit(cell);
+    const unsigned int n = fe_values.dofs_per_cell;
+    cell_matrix.reinit(n, n);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          cell_matrix(i, j) += fe_values.shape_grad(i, q) *
+                               fe_values.shape_grad(j, q) * fe_values.JxW(q);
+  }
+
+
+
+  std::vector<Quadrature<1>>
+  matrix_free_quadratures(const StiffnessQuadrature stiffness_quadrature)
+  {
+    constexpr unsigned int n_points = 2;
+    const Quadrature<1>    stiffness =
+      stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
+           Quadrature<1>(QGaussLobatto<1>(n_points)) :
+           Quadrature<1>(QGauss<1>(n_points));
+    return {stiffness, QGaussLobatto<1>(n_points)};
+  }
+
+
+
+  void
+  copy_owned(const Vector &src, FineVector &dst)
+  {
+    AssertDimension(src.locally_owned_size(), dst.locally_owned_size());
+    std::copy(src.begin(), src.end(), dst.begin());
+  }
+
+
+
+  void
+  copy_owned(const FineVector &src, Vector &dst)
+  {
+    AssertDimension(src.locally_owned_size(), dst.locally_owned_size());
+    std::copy(src.begin(), src.begin() + src.locally_owned_size(), dst.begin());
+  }
+
+
+
+  template <int dim, typename Number>
+  void
+  assert_cartesian_cells(const MatrixFree<dim, Number> &data)
+  {
+    bool cartesian = true;
+    for (unsigned int cell = 0; cell < data.n_cell_batches(); ++cell)
+      cartesian = cartesian && data.get_mapping_info().get_cell_type(cell) ==
+                                 internal::MatrixFreeFunctions::cartesian;
+    AssertThrow(cartesian,
+                ExcMessage("The matrix-free stiffness operator needs a mesh "
+                           "of axis-parallel cubes."));
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::set_coefficients(
+    const double                       f,
+    const Q1CellStiffness<dim, float> &cells,
+    const LevelVector                 &l_diagonal,
+    const LevelVector                 &d)
+  {
+    factor             = f;
+    cell_stiffness     = &cells;
+    stiffness_diagonal = &l_diagonal;
+    diagonal           = &d;
+    compute_diagonal();
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::compute_diagonal()
+  {
+    this->inverse_diagonal_entries =
+      std::make_shared<DiagonalMatrix<LevelVector>>();
+    LevelVector &inverse = this->inverse_diagonal_entries->get_vector();
+    this->data->initialize_dof_vector(inverse);
+    const unsigned int n = inverse.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      inverse.local_element(i) =
+        1.f / (factor * stiffness_diagonal->local_element(i) +
+               diagonal->local_element(i));
+    this->set_constrained_entries_to_one(inverse);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::apply_add(LevelVector &dst, const LevelVector &src) const
+  {
+    this->data->cell_loop(&LevelStiffness::local_apply, this, dst, src);
+    const unsigned int n = dst.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      dst.local_element(i) += diagonal->local_element(i) * src.local_element(i);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::local_apply(
+    const MatrixFree<dim, float>                &data,
+    LevelVector                                 &dst,
+    const LevelVector                           &src,
+    const std::pair<unsigned int, unsigned int> &cell_range) const
+  {
+    Q1Evaluation<dim, float> phi(data);
+    for (unsigned int cell = cell_range.first; cell < cell_range.second; ++cell)
+      {
+        phi.reinit(cell);
+        phi.read_dof_values(src);
+        cell_stiffness->apply(phi, factor);
+        phi.distribute_local_to_global(dst);
+      }
+  }
+
+
+
+  template <int dim>
+  MultigridHierarchy<dim>::MultigridHierarchy(
+    const DoFHandler<dim>    &dof_handler,
+    const StiffnessQuadrature stiffness_quadrature,
+    const bool                dirichlet)
+    : dof_handler(dof_handler)
+    , cell_stiffness(matrix_free_quadratures(stiffness_quadrature)[0])
+  {
+    const unsigned int n_levels =
+      dof_handler.get_triangulation().n_global_levels();
+    mg_constrained_dofs.initialize(dof_handler);
+    if (dirichlet)
+      {
+        std::set<types::boundary_id> boundary;
+        for (unsigned int face = 0; face < 2 * dim; ++face)
+          boundary.insert(face);
+        mg_constrained_dofs.make_zero_boundary_constraints(dof_handler,
+                                                           boundary);
+      }
+    levels.resize(0, n_levels - 1);
+    lumped_mass.resize(0, n_levels - 1);
+    stiffness_diagonal.resize(0, n_levels - 1);
+    for (unsigned int level = 0; level < n_levels; ++level)
+      {
+        levels[level] = make_level(level, stiffness_quadrature);
+        compute_level_vectors(level);
+      }
+    transfer.initialize_constraints(mg_constrained_dofs);
+    transfer.build(dof_handler);
+  }
+
+
+
+  template <int dim>
+  std::shared_ptr<const MatrixFree<dim, float>>
+  MultigridHierarchy<dim>::make_level(
+    const unsigned int        level,
+    const StiffnessQuadrature stiffness_quadrature) const
+  {
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_level_dofs(dof_handler, level, relevant);
+    AffineConstraints<double> level_constraints;
+    level_constraints.reinit(relevant);
+    if (mg_constrained_dofs.have_boundary_indices())
+      level_constraints.add_lines(
+        mg_constrained_dofs.get_boundary_indices(level));
+    level_constraints.close();
+
+    typename MatrixFree<dim, float>::AdditionalData data;
+    data.tasks_parallel_scheme = MatrixFree<dim, float>::AdditionalData::none;
+    data.mapping_update_flags =
+      update_gradients | update_values | update_JxW_values;
+    data.mg_level   = level;
+    auto level_data = std::make_shared<MatrixFree<dim, float>>();
+    level_data->reinit(MappingQ1<dim>(),
+                       std::vector<const DoFHandler<dim> *>{&dof_handler},
+                       std::vector<const AffineConstraints<double> *>{
+                         &level_constraints},
+                       matrix_free_quadratures(stiffness_quadrature),
+                       data);
+    assert_cartesian_cells(*level_data);
+    return level_data;
+  }
+
+
+
+  template <int dim>
+  void
+  MultigridHierarchy<dim>::compute_level_vectors(const unsigned int level)
+  {
+    const MatrixFree<dim, float> &data = *levels[level];
+    data.initialize_dof_vector(lumped_mass[level]);
+    Q1Evaluation<dim, float> mass(data, 0, lumped_mass_quadrature);
+    for (unsigned int cell = 0; cell < data.n_cell_batches(); ++cell)
+      {
+        mass.reinit(cell);
+        for (unsigned int q = 0; q < mass.n_q_points; ++q)
+          mass.submit_value(make_vectorized_array<float>(1.f), q);
+        mass.integrate(EvaluationFlags::values);
+        mass.distribute_local_to_global(lumped_mass[level]);
+      }
+    lumped_mass[level].compress(VectorOperation::add);
+
+    data.initialize_dof_vector(stiffness_diagonal[level]);
+    const Quadrature<dim> quadrature(
+      data.get_quadrature().get_tensor_basis()[0]);
+    FEValues<dim>                        fe_values(dof_handler.get_fe(),
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    FullMatrix<double>                   cell_matrix;
+    std::vector<types::global_dof_index> indices(
+      dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(level))
+      if (cell->is_locally_owned_on_level())
+        {
+          cell->get_mg_dof_indices(indices);
+          cell_stiffness_matrix(fe_values, cell, cell_matrix);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            stiffness_diagonal[level](indices[i]) += cell_matrix(i, i);
+        }
+    stiffness_diagonal[level].compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  GeometricMultigrid<dim>::GeometricMultigrid(
+    const MultigridHierarchy<dim> &hierarchy,
+    const double                   factor,
+    const FineVector              &coefficient,
+    const unsigned int             smoother_sweeps)
+    : hierarchy(hierarchy)
+  {
+    setup_levels(factor, coefficient, smoother_sweeps);
+    const unsigned int max_level = operators.max_level();
+    mg_matrix.initialize(operators);
+    mg_interface.initialize(interface_operators);
+    coarse.initialize(smoother);
+    multigrid = std::make_unique<Multigrid<LevelVector>>(
+      mg_matrix, coarse, hierarchy.transfer, smoother, smoother, 0, max_level);
+    multigrid->set_edge_matrices(mg_interface, mg_interface);
+    preconditioner = std::make_unique<
+      PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>(
+      hierarchy.dof_handler, *multigrid, hierarchy.transfer);
+    src_fine.reinit(coefficient.get_partitioner());
+    dst_fine.reinit(coefficient.get_partitioner());
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::setup_levels(const double       factor,
+                                        const FineVector  &coefficient,
+                                        const unsigned int smoother_sweeps)
+  {
+    const unsigned int max_level = hierarchy.levels.max_level();
+    level_coefficient.resize(0, max_level);
+    level_diagonal.resize(0, max_level);
+    operators.resize(0, max_level);
+    interface_operators.resize(0, max_level);
+    hierarchy.transfer.interpolate_to_mg(hierarchy.dof_handler,
+                                         level_coefficient,
+                                         coefficient);
+    for (unsigned int level = max_level; level > 0; --level)
+      average_to_coarser(level);
+
+    MGLevelObject<typename Smoother::AdditionalData> smoother_data(0,
+                                                                   max_level);
+    for (unsigned int level = 0; level <= max_level; ++level)
+      {
+        level_diagonal[level].reinit(hierarchy.lumped_mass[level]);
+        const unsigned int n = level_diagonal[level].locally_owned_size();
+        for (unsigned int i = 0; i < n; ++i)
+          level_diagonal[level].local_element(i) =
+            hierarchy.lumped_mass[level].local_element(i) *
+            level_coefficient[level].local_element(i);
+        operators[level].initialize(hierarchy.levels[level],
+                                    hierarchy.mg_constrained_dofs,
+                                    level);
+        operators[level].set_coefficients(factor,
+                                          hierarchy.cell_stiffness,
+                                          hierarchy.stiffness_diagonal[level],
+                                          level_diagonal[level]);
+        interface_operators[level].initialize(operators[level]);
+
+        auto &data          = smoother_data[level];
+        data.preconditioner = operators[level].get_matrix_diagonal_inverse();
+        if (level > 0)
+          {
+            data.smoothing_range     = smoothing_range;
+            data.degree              = smoother_sweeps;
+            data.eig_cg_n_iterations = eigenvalue_iterations;
+          }
+        else
+          {
+            data.smoothing_range     = multigrid_coarse_accuracy;
+            data.degree              = numbers::invalid_unsigned_int;
+            data.eig_cg_n_iterations = operators[0].m();
+          }
+      }
+    smoother.initialize(operators, smoother_data);
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::average_to_coarser(const unsigned int level)
+  {
+    const LevelVector &mass = hierarchy.lumped_mass[level];
+    LevelVector        weighted(mass);
+    for (unsigned int i = 0; i < weighted.locally_owned_size(); ++i)
+      weighted.local_element(i) *= level_coefficient[level].local_element(i);
+    LevelVector sum, weight;
+    sum.reinit(hierarchy.lumped_mass[level - 1]);
+    weight.reinit(hierarchy.lumped_mass[level - 1]);
+    hierarchy.transfer.restrict_and_add(level, sum, weighted);
+    hierarchy.transfer.restrict_and_add(level, weight, mass);
+    LevelVector &coarse = level_coefficient[level - 1];
+    for (unsigned int i = 0; i < sum.locally_owned_size(); ++i)
+      if (weight.local_element(i) > 0)
+        coarse.local_element(i) =
+          sum.local_element(i) / weight.local_element(i);
+  }
+
+
+
+  template <int dim>
+  void
+  GeometricMultigrid<dim>::vmult(Vector &dst, const Vector &src) const
+  {
+    copy_owned(src, src_fine);
+    preconditioner->vmult(dst_fine, src_fine);
+    copy_owned(dst_fine, dst);
+  }
+
+
+
+  template void
+  cell_stiffness_matrix(FEValues<2> &,
+                        const DoFHandler<2>::active_cell_iterator &,
+                        FullMatrix<double> &);
+  template void
+  cell_stiffness_matrix(FEValues<3> &,
+                        const DoFHandler<3>::active_cell_iterator &,
+                        FullMatrix<double> &);
+  template void
+  assert_cartesian_cells(const MatrixFree<2, double> &);
+  template void
+  assert_cartesian_cells(const MatrixFree<3, double> &);
+  template class LevelStiffness<2>;
+  template class LevelStiffness<3>;
+  template class MultigridHierarchy<2>;
+  template class MultigridHierarchy<3>;
+  template class GeometricMultigrid<2>;
+  template class GeometricMultigrid<3>;
+} // namespace PhaseField
