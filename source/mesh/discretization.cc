@@ -125,11 +125,11 @@ namespace PhaseField
     , fe(1)
     , dof_handler(triangulation)
   {
-    AssertThrow(settings.backend == OperatorBackend::assembled ||
-                  settings.boundary_conditions != BoundaryConditions::periodic,
-                ExcMessage("`Linear solver / Type = matrix-free` does not "
-                           "support periodic boundary conditions; use "
-                           "`iterative` or `direct`."));
+    if (settings.backend == OperatorBackend::matrix_free &&
+        settings.boundary_conditions == BoundaryConditions::periodic)
+      throw InputError("<Linear solver / Type> = matrix-free does not "
+                       "support periodic boundary conditions: use iterative "
+                       "or direct.");
   }
 
 

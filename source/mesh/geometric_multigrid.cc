@@ -276,11 +276,13 @@ namespace PhaseField
 
   template <int dim>
   GeometricMultigrid<dim>::GeometricMultigrid(
-    const MultigridHierarchy<dim> &hierarchy,
-    const double                   factor,
-    const FineVector              &coefficient,
-    const unsigned int             smoother_sweeps)
+    const MultigridHierarchy<dim>               &hierarchy,
+    const double                                 factor,
+    const FineVector                            &coefficient,
+    const unsigned int                           smoother_sweeps,
+    std::vector<std::pair<unsigned int, double>> constrained)
     : hierarchy(hierarchy)
+    , constrained_diagonal(std::move(constrained))
   {
     setup_levels(factor, coefficient, smoother_sweeps);
     const unsigned int max_level = operators.max_level();
@@ -382,8 +384,12 @@ namespace PhaseField
   GeometricMultigrid<dim>::vmult(Vector &dst, const Vector &src) const
   {
     copy_owned(src, src_fine);
+    for (const auto &[i, a_ii] : constrained_diagonal)
+      src_fine.local_element(i) = 0;
     preconditioner->vmult(dst_fine, src_fine);
     copy_owned(dst_fine, dst);
+    for (const auto &[i, a_ii] : constrained_diagonal)
+      dst.begin()[i] = src.begin()[i] / a_ii;
   }
 
 

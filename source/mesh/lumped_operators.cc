@@ -5,6 +5,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <phasefield/mesh/lumped_operators.h>
+#include <phasefield/mesh/matrix_free_stiffness.h>
 
 namespace PhaseField
 {
@@ -58,11 +59,25 @@ namespace PhaseField
     if (backend == OperatorBackend::assembled)
       stiffness_backend.find_diagonal();
     else
-      matrix_free_backend.reinit(dof_handler,
-                                 constraints,
-                                 lumped_mass,
-                                 {settings.stiffness_quadrature,
-                                  settings.dirichlet});
+      {
+        matrix_free_backend = std::make_shared<MatrixFreeStiffness<dim>>();
+        matrix_free_backend->reinit(dof_handler,
+                                    constraints,
+                                    lumped_mass,
+                                    {settings.stiffness_quadrature,
+                                     settings.dirichlet});
+      }
+  }
+
+
+
+  template <int dim>
+  const StiffnessOperator &
+  LumpedOperators<dim>::stiffness_operator() const
+  {
+    if (backend == OperatorBackend::matrix_free)
+      return *matrix_free_backend;
+    return stiffness_backend;
   }
 
 
@@ -86,7 +101,7 @@ namespace PhaseField
   LumpedOperators<dim>::release()
   {
     stiffness_backend.clear();
-    matrix_free_backend.clear();
+    matrix_free_backend.reset();
     lumped_mass.clear();
     inverse_lumped_mass.clear();
     std::vector<unsigned int>().swap(constrained_local_indices);

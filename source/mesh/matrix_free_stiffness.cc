@@ -221,10 +221,13 @@ namespace PhaseField
       }
     constraints->distribute(coefficient);
     coefficient.update_ghost_values();
-    return std::make_unique<GeometricMultigrid<dim>>(*hierarchy,
-                                                     factor,
-                                                     coefficient,
-                                                     smoother_sweeps);
+    // the diagonal entries of the constrained rows of f L + D
+    std::vector<std::pair<unsigned int, double>> constrained(
+      constrained_diagonal);
+    for (auto &[i, a_ii] : constrained)
+      a_ii = factor * a_ii + diagonal.begin()[i];
+    return std::make_unique<GeometricMultigrid<dim>>(
+      *hierarchy, factor, coefficient, smoother_sweeps, std::move(constrained));
   }
 
 

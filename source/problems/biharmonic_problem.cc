@@ -255,13 +255,15 @@ namespace PhaseField
     constexpr double       newton_relative_tolerance = 1e-10;
     constexpr unsigned int newton_max_iterations     = 2;
 
-    /** The uniform mesh of one level with the boundary conditions. */
+    /** The uniform mesh of one level, its boundary conditions and backend. */
     template <int dim>
     typename Discretization<dim>::Settings
     uniform_mesh(const unsigned int                 level,
-                 const BiharmonicBoundaryConditions bc)
+                 const BiharmonicBoundaryConditions bc,
+                 const OperatorBackend              backend)
     {
       typename Discretization<dim>::Settings settings{};
+      settings.backend           = backend;
       settings.mesh.finest_level = settings.mesh.coarsest_level = level;
       settings.mesh.adaptive                                    = false;
       settings.mesh.stiffness_quadrature = StiffnessQuadrature::gauss;
@@ -322,7 +324,8 @@ namespace PhaseField
                       TimerOutput::never,
                       TimerOutput::wall_times)
     , discretization(uniform_mesh<dim>(level,
-                                       parameters.problem.boundary_conditions),
+                                       parameters.problem.boundary_conditions,
+                                       parameters.linear_solver.backend),
                      mpi_communicator)
     , exact(BiharmonicSolutions::exact_solution<dim>(
         parameters.problem.boundary_conditions))

@@ -72,8 +72,11 @@ namespace PhaseField
   std::string
   NestedScheme<dim>::linear_solver_description() const
   {
-    return linear_solver->type() == LinearSolverType::direct ?
-             "direct (MUMPS)" :
+    if (linear_solver->type() == LinearSolverType::direct)
+      return "direct (MUMPS)";
+    return discretization.get_operators().get_backend() ==
+               OperatorBackend::matrix_free ?
+             "matrix-free (CG + geometric multigrid)" :
              "iterative (CG + AMG)";
   }
 

@@ -167,12 +167,18 @@ namespace PhaseField
      * The cycle for @p factor L + M[@p coefficient] on the levels of
      * @p hierarchy, which must outlive it; @p coefficient is a vector of
      * the active matrix-free object with its constrained entries
-     * distributed. @p smoother_sweeps is the Chebyshev degree. Collective.
+     * distributed. @p smoother_sweeps is the Chebyshev degree.
+     * @p constrained_diagonal holds (local index, diagonal entry) of the
+     * operator's constrained rows, which are decoupled: the cycle solves
+     * them exactly and keeps them out of the levels, so that it stays
+     * symmetric. Collective.
      */
-    GeometricMultigrid(const MultigridHierarchy<dim> &hierarchy,
-                       const double                   factor,
-                       const FineVector              &coefficient,
-                       const unsigned int             smoother_sweeps);
+    GeometricMultigrid(
+      const MultigridHierarchy<dim>               &hierarchy,
+      const double                                 factor,
+      const FineVector                            &coefficient,
+      const unsigned int                           smoother_sweeps,
+      std::vector<std::pair<unsigned int, double>> constrained_diagonal);
 
     void
     vmult(Vector &dst, const Vector &src) const override;
@@ -215,8 +221,9 @@ namespace PhaseField
       dealii::PreconditionMG<dim,
                              LevelVector,
                              dealii::MGTransferMatrixFree<dim, float>>>
-                       preconditioner;
-    mutable FineVector src_fine, dst_fine;
+                                                       preconditioner;
+    const std::vector<std::pair<unsigned int, double>> constrained_diagonal;
+    mutable FineVector                                 src_fine, dst_fine;
   };
 
 

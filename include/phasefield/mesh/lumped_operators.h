@@ -9,13 +9,15 @@
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
-#include <phasefield/mesh/matrix_free_stiffness.h>
 #include <phasefield/mesh/stiffness_operator.h>
 #include <phasefield/mesh/trilinos_stiffness.h>
 #include <vector>
 
 namespace PhaseField
 {
+  template <int dim>
+  class MatrixFreeStiffness;
+
   /**
    * The two mesh-dependent operators of every scheme in this library, for
    * one scalar Q1 space with hanging-node constraints:
@@ -122,12 +124,7 @@ namespace PhaseField
      * linear-algebra backend).
      */
     const StiffnessOperator &
-    stiffness_operator() const
-    {
-      if (backend == OperatorBackend::matrix_free)
-        return matrix_free_backend;
-      return stiffness_backend;
-    }
+    stiffness_operator() const;
 
     /**
      * The assembled stiffness matrix, for what needs its entries: the
@@ -142,6 +139,21 @@ namespace PhaseField
     get_backend() const
     {
       return backend;
+    }
+
+    /**
+     * Throw an InputError naming @p user (a scheme) unless L is assembled:
+     * for what multiplies or factorises the matrix itself.
+     */
+    void
+    require_assembled(const std::string &user) const
+    {
+      if (backend != OperatorBackend::assembled)
+        throw InputError(
+          user + " needs the assembled stiffness matrix, which "
+                 "<Linear solver / Type> = matrix-free does not store: use "
+                 "<Linear solver / Type> = iterative or direct, or the nested "
+                 "scheme.");
     }
 
     /**
@@ -191,8 +203,8 @@ namespace PhaseField
     /** L as an assembled Trilinos matrix (the assembled backend). */
     TrilinosStiffness stiffness_backend;
 
-    /** L cell by cell (the matrix-free backend). */
-    MatrixFreeStiffness<dim> matrix_free_backend;
+    /** L cell by cell (the matrix-free backend; null otherwise). */
+    std::shared_ptr<MatrixFreeStiffness<dim>> matrix_free_backend;
 
     OperatorBackend backend = OperatorBackend::assembled;
   };
