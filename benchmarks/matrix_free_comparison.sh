@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The two backends of the operator seam side by side (issue 50): the
+# sphere (r = 0.35, or the cube of edge 0.4 with SHAPE=cube), eps = 4h,
+# tau = 0.03h, inner tau = h^2, STEPS steps (default 2), no output, NP
+# ranks (default 2), with `Linear solver / Type` = iterative (assembled L,
+# CG + AMG) and matrix-free (CG + geometric multigrid). Prints per run the
+# DoFs (3 fields), Newton and CG iterations, CG per Newton iteration, the
+# wall time of the steps (statistics.csv), seconds per step and the peak
+# resident memory summed over the ranks (the program's last lines).
+# Usage: [STEPS=n] [NP=n] [SHAPE=sphere|cube] [TYPES="iterative matrix-free"]
+#          benchmarks/matrix_free_comparison.sh [build dir] [levels...]
+#   e.g. benchmarks/matrix_free_comparison.sh build 6 7
+set -uo pipefail
+build=${1:-build}; shift || true
+levels=${*:-5 6}
+shape=${SHAPE:-sphere}
+size=$([ "$shape" = sphere ] && echo "Radius=0.35" || echo "Sizes=0.4")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+printf '%-6s %-12s %10s %6s %6s %9s %8s %8s %9s\n' \
+  level type dofs newton cg cg/newton steps_s s/step memory_MB
+for level in $levels; do
+  for type in ${TYPES:-iterative matrix-free}; do
+    out=$work/${type}_$level
+    env OMP_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe \
+      -np "${NP:-2}" "$build/willmore_flow" \
+      --set "Dimension=3" --set "Output directory=$out" \
+      --set "Geometry/Shape=$shape" --set "Geometry/$size" \
+      --set "Mesh/Finest level=$level" --set "Mesh/Coarsest level=3" \
+      --set "Phase field/Epsilon=4*h" --set "Time stepping/Tau=0.03*h" \
+      --set "Time stepping/Inner tau=h^2" \
+      --set "Time stepping/Number of steps=${STEPS:-2}" \
+      --set "Output/VTU interval=0" --set "Linear solver/Type=$type" \
+      > "$out.log" 2>&1 || echo "$level $type: FAILED ($out.log)"
+    memory=$(sed -n 's/.*Peak resident memory, summed over .* rank(s): \([0-9]*\) MiB.*/\1/p' "$out.log")
+    /usr/bin/python3 - "$out/statistics.csv" "$level" "$type" "${memory:-0}" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+steps = rows[1:]
+n = sum(int(float(r["newton_iterations"])) for r in steps)
+cg = sum(int(float(r["linear_iterations"])) for r in steps)
+wall = float(steps[-1]["wall_seconds"]) - float(rows[0]["wall_seconds"])
+print(f'{sys.argv[2]:<6} {sys.argv[3]:<12} {int(steps[-1]["dofs"]):>10} {n:>6} {cg:>6} '
+      f'{cg / max(n, 1):>9.1f} {wall:>8.1f} {wall / len(steps):>8.1f} {sys.argv[4]:>9}')
+PY
+  done
+done
