@@ -6,7 +6,8 @@
 # CG + AMG) and matrix-free (CG + geometric multigrid). Prints per run the
 # DoFs (3 fields), Newton and CG iterations, CG per Newton iteration, the
 # wall time of the steps (statistics.csv), seconds per step and the peak
-# resident memory summed over the ranks (the program's last lines).
+# resident memory summed over the ranks (the program's last lines) and the
+# Willmore energy after the last step.
 # Usage: [STEPS=n] [NP=n] [SHAPE=sphere|cube] [TYPES="iterative matrix-free"]
 #          benchmarks/matrix_free_comparison.sh [build dir] [levels...]
 #   e.g. benchmarks/matrix_free_comparison.sh build 6 7
@@ -17,8 +18,8 @@ shape=${SHAPE:-sphere}
 size=$([ "$shape" = sphere ] && echo "Radius=0.35" || echo "Sizes=0.4")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-printf '%-6s %-12s %10s %6s %6s %9s %8s %8s %9s\n' \
-  level type dofs newton cg cg/newton steps_s s/step memory_MB
+printf '%-6s %-12s %10s %6s %6s %9s %8s %8s %9s %12s\n' \
+  level type dofs newton cg cg/newton steps_s s/step memory_MB W
 for level in $levels; do
   for type in ${TYPES:-iterative matrix-free}; do
     out=$work/${type}_$level
@@ -41,7 +42,8 @@ n = sum(int(float(r["newton_iterations"])) for r in steps)
 cg = sum(int(float(r["linear_iterations"])) for r in steps)
 wall = float(steps[-1]["wall_seconds"]) - float(rows[0]["wall_seconds"])
 print(f'{sys.argv[2]:<6} {sys.argv[3]:<12} {int(steps[-1]["dofs"]):>10} {n:>6} {cg:>6} '
-      f'{cg / max(n, 1):>9.1f} {wall:>8.1f} {wall / len(steps):>8.1f} {sys.argv[4]:>9}')
+      f'{cg / max(n, 1):>9.1f} {wall:>8.1f} {wall / len(steps):>8.1f} {sys.argv[4]:>9} '
+      f'{float(steps[-1]["willmore_energy"]):>12.8f}')
 PY
   done
 done

@@ -218,8 +218,7 @@ namespace PhaseField
     , discretization(discretization)
     , pcout(pcout)
   {
-    discretization.get_operators().require_assembled(
-      "The semi-implicit scheme");
+    discretization.require_assembled_operators("The semi-implicit scheme");
     // the Jacobian is not symmetric
     linear_solver = std::make_unique<LinearSolver>(
       LinearSolver::resolve_type(settings.linear_solver.type, dim),

@@ -252,6 +252,22 @@ namespace PhaseField
       return settings;
     }
 
+    /**
+     * Throw an InputError naming @p user (a scheme) unless the stiffness
+     * operator is assembled (Settings::backend): for what multiplies or
+     * factorises the matrix itself. Can be called before create_mesh().
+     */
+    void
+    require_assembled_operators(const std::string &user) const
+    {
+      if (settings.backend != OperatorBackend::assembled)
+        throw InputError(
+          user + " needs the assembled stiffness matrix, which "
+                 "<Linear solver / Type> = matrix-free does not store: use "
+                 "<Linear solver / Type> = iterative or direct, or the nested "
+                 "scheme.");
+    }
+
     /** Number of DoFs of one field. */
     dealii::types::global_dof_index
     n_dofs() const

@@ -142,21 +142,6 @@ namespace PhaseField
     }
 
     /**
-     * Throw an InputError naming @p user (a scheme) unless L is assembled:
-     * for what multiplies or factorises the matrix itself.
-     */
-    void
-    require_assembled(const std::string &user) const
-    {
-      if (backend != OperatorBackend::assembled)
-        throw InputError(
-          user + " needs the assembled stiffness matrix, which "
-                 "<Linear solver / Type> = matrix-free does not store: use "
-                 "<Linear solver / Type> = iterative or direct, or the nested "
-                 "scheme.");
-    }
-
-    /**
      * Add @p values (one per locally owned DoF) to the diagonal of
      * @p matrix, whose sparsity pattern contains the diagonal, and compress.
      */
