@@ -266,6 +266,32 @@ namespace PhaseField
 
   template <int dim>
   void
+  Discretization<dim>::print_memory_by_item(
+    const ConditionalOStream &pcout) const
+  {
+    constexpr double bytes_per_mib = 1024. * 1024.;
+    const auto       mib           = [this](const std::size_t bytes) {
+      return Utilities::MPI::sum(static_cast<double>(bytes), mpi_communicator) /
+             bytes_per_mib;
+    };
+    const double mesh        = mib(triangulation.memory_consumption());
+    const double dofs        = mib(dof_handler.memory_consumption());
+    const double constrained = mib(constraints.memory_consumption());
+    const double mass        = mib(operators.lumped_mass.memory_consumption() +
+                            operators.inverse_lumped_mass.memory_consumption());
+    const double stiffness =
+      mib(operators.stiffness_operator().memory_consumption());
+    pcout << "Memory by item, summed over the ranks (MiB): mesh " << std::fixed
+          << std::setprecision(0) << mesh << ", DoF handler " << dofs
+          << ", constraints " << constrained << ", lumped mass " << mass
+          << ", stiffness operator " << stiffness << " (" << n_dofs()
+          << " DoFs per field)" << std::defaultfloat << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
   Discretization<dim>::print_partition_balance(
     const ConditionalOStream &pcout) const
   {

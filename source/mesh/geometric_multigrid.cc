@@ -203,6 +203,22 @@ namespace PhaseField
 
 
   template <int dim>
+  std::size_t
+  MultigridHierarchy<dim>::memory_consumption() const
+  {
+    std::size_t bytes =
+      transfer.memory_consumption() + mg_constrained_dofs.memory_consumption();
+    for (unsigned int level = levels.min_level(); level <= levels.max_level();
+         ++level)
+      bytes += levels[level]->memory_consumption() +
+               lumped_mass[level].memory_consumption() +
+               stiffness_diagonal[level].memory_consumption();
+    return bytes;
+  }
+
+
+
+  template <int dim>
   std::shared_ptr<const MatrixFree<dim, float>>
   MultigridHierarchy<dim>::make_level(
     const unsigned int        level,

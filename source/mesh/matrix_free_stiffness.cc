@@ -50,6 +50,28 @@ namespace PhaseField
 
 
   template <int dim>
+  std::size_t
+  MatrixFreeStiffness<dim>::memory_consumption() const
+  {
+    return matrix_free.memory_consumption() + src_fine.memory_consumption() +
+           dst_fine.memory_consumption() +
+           constrained_diagonal.capacity() *
+             sizeof(std::pair<unsigned int, double>) +
+           multigrid_memory_consumption();
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  MatrixFreeStiffness<dim>::multigrid_memory_consumption() const
+  {
+    return hierarchy ? hierarchy->memory_consumption() : 0;
+  }
+
+
+
+  template <int dim>
   void
   MatrixFreeStiffness<dim>::clear()
   {

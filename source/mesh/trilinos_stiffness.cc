@@ -63,6 +63,15 @@ namespace PhaseField
 
 
 
+  std::size_t
+  TrilinosStiffness::memory_consumption() const
+  {
+    return matrix.memory_consumption() +
+           diagonal_positions.capacity() * sizeof(int);
+  }
+
+
+
   void
   TrilinosStiffness::clear()
   {

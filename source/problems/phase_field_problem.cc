@@ -88,6 +88,7 @@ namespace PhaseField
     run_time_loops();
     computing_timer.print_summary();
     print_peak_memory(pcout, mpi_communicator);
+    discretization.print_memory_by_item(pcout);
     discretization.print_partition_balance(pcout);
   }
 

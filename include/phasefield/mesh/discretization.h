@@ -297,6 +297,14 @@ namespace PhaseField
     partition_balance() const;
 
     /**
+     * Print in one line on @p pcout the memory of the mesh
+     * (triangulation), the DoF handler, the constraints, the lumped mass
+     * and L (stiffness_operator()), summed over the ranks. Collective.
+     */
+    void
+    print_memory_by_item(const dealii::ConditionalOStream &pcout) const;
+
+    /**
      * Print partition_balance() in one line on @p pcout, with the largest
      * share of a rank relative to the mean. Collective.
      */

@@ -124,6 +124,10 @@ namespace PhaseField
                        const StiffnessQuadrature      stiffness_quadrature,
                        const bool                     dirichlet);
 
+    /** Bytes of the level data, vectors and transfer of this rank. */
+    std::size_t
+    memory_consumption() const;
+
     const dealii::DoFHandler<dim>           &dof_handler;
     dealii::MGConstrainedDoFs                mg_constrained_dofs;
     dealii::MGTransferMatrixFree<dim, float> transfer;

@@ -77,6 +77,14 @@ namespace PhaseField
                    const Vector      &diagonal,
                    const unsigned int smoother_sweeps) const;
 
+    /** The cell data, two vectors and the multigrid levels, if built. */
+    std::size_t
+    memory_consumption() const override;
+
+    /** Bytes of the multigrid levels (0 before the first cycle). */
+    std::size_t
+    multigrid_memory_consumption() const;
+
     /** @p dst = L @p src on vectors of the matrix-free object. */
     void
     vmult(FineVector &dst, const FineVector &src) const;

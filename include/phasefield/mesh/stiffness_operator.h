@@ -1,6 +1,7 @@
 #ifndef phasefield_mesh_stiffness_operator_h
 #define phasefield_mesh_stiffness_operator_h
 
+#include <cstddef>
 #include <deal.II/base/types.h>
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
@@ -102,6 +103,13 @@ namespace PhaseField
     shift(const double                       factor,
           Vector                            &diagonal,
           std::unique_ptr<ShiftedStiffness> &op) const = 0;
+
+    /**
+     * Bytes this rank keeps for L (the matrix, or the cell data and the
+     * multigrid levels of a matrix-free backend).
+     */
+    virtual std::size_t
+    memory_consumption() const = 0;
   };
 } // namespace PhaseField
 

@@ -30,6 +30,9 @@ namespace PhaseField
           Vector                            &diagonal,
           std::unique_ptr<ShiftedStiffness> &op) const override;
 
+    std::size_t
+    memory_consumption() const override;
+
     /**
      * Find the diagonal entries of the assembled, compressed matrix
      * (diagonal_positions); called once after the assembly.
