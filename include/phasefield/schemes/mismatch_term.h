@@ -9,6 +9,9 @@
 
 namespace PhaseField
 {
+  template <int dim>
+  class MismatchModel;
+
   /**
    * The mismatch of shape from contour (thesis 6.2),
    *
@@ -68,6 +71,13 @@ namespace PhaseField
                       const double  factor,
                       Vector       &y) const override;
 
+    /**
+     * The Gauss-Newton model of j at @p u0 (MismatchModel): the step model
+     * of the monolithic coupling.
+     */
+    std::unique_ptr<EnergyTerm>
+    step_model(const Vector &u0) const override;
+
     /** alpha[@p u], j and the labeling error. Collective. */
     Evaluation
     evaluate(const Vector &u) const;
@@ -80,9 +90,18 @@ namespace PhaseField
     }
 
   private:
+    friend class MismatchModel<dim>;
+
     /** @p u with the ghost values that the column integrals read. */
     Vector
     ghosted(const Vector &u) const;
+
+    /**
+     * J @p d, the labeling linearised at the ghosted state @p u (its
+     * signs), for a locally owned @p d (constraints distributed here).
+     */
+    std::vector<double>
+    jacobian_product(const Vector &u, const Vector &d) const;
 
     /**
      * @p y += @p factor J^T 2 gamma W @p residual, for a residual on the
@@ -98,6 +117,60 @@ namespace PhaseField
     const HuffmanLabeling::LabelingGrid<dim> labeling_grid;
     const std::vector<double>                target;
     const double                             gamma;
+  };
+
+
+
+  /**
+   * The Gauss-Newton model of the mismatch at a state U0,
+   *
+   *   j_0[U] = gamma Int (alpha[U0] + J0 (U - U0) - alpha*)^2 dx',
+   *
+   * with J0 the labeling linearised at U0 (the signs of its column
+   * differences). alpha[U] is piecewise linear in U, so j_0 = j wherever
+   * no column difference has changed sign since U0; where one has, j_0
+   * is the quadratic continuation of j across the kink. Its gradient is 2 gamma
+   * J0^T W (alpha[U0] + J0 (U - U0) - alpha*) and its Hessian exactly 2 gamma
+   * J0^T W J0 (the Gauss-Newton product of j at U0), so Newton's method on a
+   * step with it converges where it cycles on j itself (the kinks); the time
+   * loop accepts the step by the energy law with j (the merit function).
+   */
+  template <int dim>
+  class MismatchModel : public EnergyTerm
+  {
+  public:
+    /** The model of @p term (which must outlive it) at @p u0. Collective. */
+    MismatchModel(const MismatchTerm<dim> &term, const Vector &u0);
+
+    std::string
+    name() const override
+    {
+      return "mismatch model";
+    }
+    double
+    value(const Vector &u) const override;
+    void
+    add_gradient(const Vector &u,
+                 const double  factor,
+                 Vector       &g) const override;
+    void
+    add_hessian_vmult(const Vector &u,
+                      const Vector &d,
+                      const double  factor,
+                      Vector       &y) const override;
+
+  private:
+    /** alpha[U0] + J0 (@p u - U0) - alpha* at the points of the grid. */
+    std::vector<double>
+    linear_residual(const Vector &u) const;
+
+    const MismatchTerm<dim> &term;
+    /** U0, locally owned. */
+    const Vector u0_owned;
+    /** U0, ghosted (the signs of J0). */
+    const Vector u0;
+    /** alpha[U0] - alpha*. */
+    std::vector<double> residual0;
   };
 } // namespace PhaseField
 
