@@ -68,7 +68,8 @@ namespace PhaseField
   MismatchTerm<dim>::add_transposed(const Vector              &u,
                                     const std::vector<double> &residual,
                                     const double               factor,
-                                    Vector                    &y) const
+                                    Vector                    &y,
+                                    const double               kink_width) const
   {
     std::vector<double> r(labeling_grid.size());
     for (unsigned int i = 0; i < labeling_grid.size(); ++i)
@@ -80,7 +81,8 @@ namespace PhaseField
                                              u,
                                              labeling_grid,
                                              r,
-                                             product);
+                                             product,
+                                             kink_width);
     y.add(factor, product);
   }
 
@@ -106,7 +108,9 @@ namespace PhaseField
 
   template <int dim>
   std::vector<double>
-  MismatchTerm<dim>::jacobian_product(const Vector &u, const Vector &d) const
+  MismatchTerm<dim>::jacobian_product(const Vector &u,
+                                      const Vector &d,
+                                      const double  kink_width) const
   {
     Vector d_constrained(d);
     discretization.get_constraints().distribute(d_constrained);
@@ -114,7 +118,8 @@ namespace PhaseField
       discretization.get_dof_handler(),
       u,
       ghosted(d_constrained),
-      labeling_grid);
+      labeling_grid,
+      kink_width);
   }
 
 
@@ -151,8 +156,38 @@ namespace PhaseField
     residual0 = HuffmanLabeling::labeling(term.discretization.get_dof_handler(),
                                           this->u0,
                                           term.labeling_grid);
+    curvature_weight.resize(residual0.size());
     for (unsigned int i = 0; i < residual0.size(); ++i)
-      residual0[i] -= term.target[i];
+      {
+        residual0[i] -= term.target[i];
+        curvature_weight[i] = term.gamma * term.labeling_grid.weight(i) *
+                              std::max(residual0[i], 0.);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MismatchModel<dim>::add_curvature(const Vector &d,
+                                    const double  factor,
+                                    Vector       &y) const
+  {
+    const Discretization<dim> &discretization = term.discretization;
+    Vector                     d_constrained(d);
+    discretization.get_constraints().distribute(d_constrained);
+    Vector product(y);
+    product = 0;
+    HuffmanLabeling::add_kink_curvature_product(
+      discretization.get_dof_handler(),
+      discretization.get_constraints(),
+      u0,
+      term.ghosted(d_constrained),
+      term.labeling_grid,
+      curvature_weight,
+      curvature_floor,
+      product);
+    y.add(factor, product);
   }
 
 
@@ -163,7 +198,7 @@ namespace PhaseField
   {
     Vector difference(u);
     difference.add(-1., u0_owned);
-    std::vector<double> r = term.jacobian_product(u0, difference);
+    std::vector<double> r = term.jacobian_product(u0, difference, kink_width);
     for (unsigned int i = 0; i < r.size(); ++i)
       r[i] += residual0[i];
     return r;
@@ -178,7 +213,13 @@ namespace PhaseField
     std::vector<double> squared = linear_residual(u);
     for (double &r : squared)
       r *= r;
-    return term.gamma * term.labeling_grid.integrate(squared);
+    Vector difference(u);
+    difference.add(-1., u0_owned);
+    Vector curvature(u);
+    curvature = 0;
+    add_curvature(difference, 1., curvature);
+    return term.gamma * term.labeling_grid.integrate(squared) +
+           0.5 * (difference * curvature);
   }
 
 
@@ -189,7 +230,10 @@ namespace PhaseField
                                    const double  factor,
                                    Vector       &g) const
   {
-    term.add_transposed(u0, linear_residual(u), factor, g);
+    term.add_transposed(u0, linear_residual(u), factor, g, kink_width);
+    Vector difference(u);
+    difference.add(-1., u0_owned);
+    add_curvature(difference, factor, g);
   }
 
 
@@ -201,7 +245,9 @@ namespace PhaseField
                                         const double  factor,
                                         Vector       &y) const
   {
-    term.add_transposed(u0, term.jacobian_product(u0, d), factor, y);
+    term.add_transposed(
+      u0, term.jacobian_product(u0, d, kink_width), factor, y, kink_width);
+    add_curvature(d, factor, y);
   }
 
 

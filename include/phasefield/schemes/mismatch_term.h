@@ -98,20 +98,25 @@ namespace PhaseField
 
     /**
      * J @p d, the labeling linearised at the ghosted state @p u (its
-     * signs), for a locally owned @p d (constraints distributed here).
+     * signs; column differences of at most @p kink_width frozen), for a
+     * locally owned @p d (constraints distributed here).
      */
     std::vector<double>
-    jacobian_product(const Vector &u, const Vector &d) const;
+    jacobian_product(const Vector &u,
+                     const Vector &d,
+                     const double  kink_width = 0) const;
 
     /**
      * @p y += @p factor J^T 2 gamma W @p residual, for a residual on the
-     * grid points (the ghosted state @p u fixes the signs).
+     * grid points (the ghosted state @p u fixes the signs; column
+     * differences of at most @p kink_width frozen).
      */
     void
     add_transposed(const Vector              &u,
                    const std::vector<double> &residual,
                    const double               factor,
-                   Vector                    &y) const;
+                   Vector                    &y,
+                   const double               kink_width = 0) const;
 
     const Discretization<dim>               &discretization;
     const HuffmanLabeling::LabelingGrid<dim> labeling_grid;
@@ -127,9 +132,12 @@ namespace PhaseField
    *   j_0[U] = gamma Int (alpha[U0] + J0 (U - U0) - alpha*)^2 dx',
    *
    * with J0 the labeling linearised at U0 (the signs of its column
-   * differences). alpha[U] is piecewise linear in U, so j_0 = j wherever
-   * no column difference has changed sign since U0; where one has, j_0
-   * is the quadratic continuation of j across the kink. Its gradient is 2 gamma
+   * differences), in which the column differences of U0 smaller than
+   * kink_width in magnitude are frozen (J0 is zero there). alpha[U] is
+   * piecewise linear in U, so j_0 = j wherever no column difference has
+   * changed sign since U0 and the frozen ones have not changed; where one
+   * has, j_0 is the quadratic continuation of j across the kink. Its
+   * gradient is 2 gamma
    * J0^T W (alpha[U0] + J0 (U - U0) - alpha*) and its Hessian exactly 2 gamma
    * J0^T W J0 (the Gauss-Newton product of j at U0), so Newton's method on a
    * step with it converges where it cycles on j itself (the kinks); the time
@@ -159,10 +167,32 @@ namespace PhaseField
                       const double  factor,
                       Vector       &y) const override;
 
+    /**
+     * Column differences |U0(x', top) - U0(x', bottom)| (U jumps by 2
+     * across the interface) at most this are frozen in the model: there
+     * the sign of J0 is that of round-off or of the flat tanh tails, and
+     * a step crosses zero, where j rises as |s| while j_0 falls. With only
+     * the exact zeros frozen, the monolithic step of the built-in default
+     * at level 5 broke the energy law with j from step 8 on at every
+     * tau down to Tau/16, by the same 0.004 (2026-11-29,
+     * doc/shape_from_contour.md, "The monolithic coupling").
+     */
+    static constexpr double kink_width = 0;
+
+    /**
+     * The smallest |s0| in the curvature 1/|s0| of the majoriser
+     * (HuffmanLabeling::add_kink_curvature_product()).
+     */
+    static constexpr double curvature_floor = 1e-4;
+
   private:
     /** alpha[U0] + J0 (@p u - U0) - alpha* at the points of the grid. */
     std::vector<double>
     linear_residual(const Vector &u) const;
+
+    /** @p y += @p factor C @p d with the majoriser's curvature C. */
+    void
+    add_curvature(const Vector &d, const double factor, Vector &y) const;
 
     const MismatchTerm<dim> &term;
     /** U0, locally owned. */
@@ -171,6 +201,8 @@ namespace PhaseField
     const Vector u0;
     /** alpha[U0] - alpha*. */
     std::vector<double> residual0;
+    /** gamma w_q max(alpha[U0] - alpha*, 0) (add_curvature()). */
+    std::vector<double> curvature_weight;
   };
 } // namespace PhaseField
 
