@@ -358,6 +358,10 @@ namespace PhaseField
   ContourProblem<dim>::move_to_level(const unsigned int index)
   {
     const WillmoreParameters next = parameters.for_level(index);
+    // the coarse level's term is on the coarse pixel grid, which the
+    // refined cells do not fit: no data term until start_level() made the
+    // next one (the initialisation below does not evaluate it)
+    mismatch_term.reset();
     {
       TimerOutput::Scope t(this->computing_timer, "mesh: level transition");
       // U will be sharpened to the finer epsilon: |U_sharp| < tanh(b) iff
