@@ -110,13 +110,12 @@ namespace PhaseField
 
       /**
        * The derivative of |s| at the column difference @p s: its sign, 0
-       * where |s| <= @p kink_width (the kink, and the frozen cells of the
-       * Gauss-Newton model).
+       * at the kink.
        */
       inline double
-      kink_sign(const double s, const double kink_width)
+      kink_sign(const double s)
       {
-        return std::abs(s) <= kink_width ? 0. : (s > 0) - (s < 0);
+        return (s > 0) - (s < 0);
       }
 
       /** u(x', top) - u(x', bottom) in a cell, from its vertex values. */
@@ -293,8 +292,7 @@ namespace PhaseField
                             const Vector                    &u,
                             const LabelingGrid<dim>         &grid,
                             const std::vector<double>       &r,
-                            Vector                          &gradient,
-                            const double                     kink_width)
+                            Vector                          &gradient)
     {
       AssertDimension(r.size(), grid.size());
       add_column_gradients(
@@ -306,7 +304,7 @@ namespace PhaseField
             const ColumnDofs<dim>                    &dofs) {
           // d/du (1/2)|difference|; zero where the sign has a kink
           return 0.5 * r[i] *
-                 kink_sign(column_difference<dim>(u, w, dofs), kink_width);
+                 kink_sign(column_difference<dim>(u, w, dofs));
         },
         gradient);
     }
@@ -346,8 +344,7 @@ namespace PhaseField
     labeling_derivative(const DoFHandler<dim>   &dof_handler,
                         const Vector            &u,
                         const Vector            &d,
-                        const LabelingGrid<dim> &grid,
-                        const double             kink_width)
+                        const LabelingGrid<dim> &grid)
     {
       std::vector<double> jd(grid.size(), 0.);
       for_each_column_point(
@@ -358,7 +355,7 @@ namespace PhaseField
             const ColumnDofs<dim>                    &dofs) {
           const double difference = column_difference<dim>(u, w, dofs);
           // d/du (1/2)|difference|; zero where the sign has a kink
-          jd[i] += 0.5 * kink_sign(difference, kink_width) *
+          jd[i] += 0.5 * kink_sign(difference) *
                    column_difference<dim>(d, w, dofs);
         },
         [](const ColumnDofs<dim> &) {});
@@ -491,15 +488,13 @@ namespace PhaseField
   template std::vector<double> labeling_derivative(const DoFHandler<dim> &,               \
                                                    const Vector &,                        \
                                                    const Vector &,                        \
-                                                   const LabelingGrid<dim> &,             \
-                                                   const double);                         \
+                                                   const LabelingGrid<dim> &);            \
   template void                add_labeling_derivative(const DoFHandler<dim> &,           \
                                                        const AffineConstraints<double> &, \
                                                        const Vector &,                    \
                                                        const LabelingGrid<dim> &,         \
                                                        const std::vector<double> &,       \
-                                                       Vector &,                          \
-                                                       const double);                     \
+                                                       Vector &);                         \
   template void add_kink_curvature_product(const DoFHandler<dim> &,                       \
                                            const AffineConstraints<double> &,             \
                                            const Vector &,                                \

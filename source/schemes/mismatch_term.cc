@@ -68,8 +68,7 @@ namespace PhaseField
   MismatchTerm<dim>::add_transposed(const Vector              &u,
                                     const std::vector<double> &residual,
                                     const double               factor,
-                                    Vector                    &y,
-                                    const double               kink_width) const
+                                    Vector                    &y) const
   {
     std::vector<double> r(labeling_grid.size());
     for (unsigned int i = 0; i < labeling_grid.size(); ++i)
@@ -81,8 +80,7 @@ namespace PhaseField
                                              u,
                                              labeling_grid,
                                              r,
-                                             product,
-                                             kink_width);
+                                             product);
     y.add(factor, product);
   }
 
@@ -108,9 +106,7 @@ namespace PhaseField
 
   template <int dim>
   std::vector<double>
-  MismatchTerm<dim>::jacobian_product(const Vector &u,
-                                      const Vector &d,
-                                      const double  kink_width) const
+  MismatchTerm<dim>::jacobian_product(const Vector &u, const Vector &d) const
   {
     Vector d_constrained(d);
     discretization.get_constraints().distribute(d_constrained);
@@ -118,8 +114,7 @@ namespace PhaseField
       discretization.get_dof_handler(),
       u,
       ghosted(d_constrained),
-      labeling_grid,
-      kink_width);
+      labeling_grid);
   }
 
 
@@ -198,7 +193,7 @@ namespace PhaseField
   {
     Vector difference(u);
     difference.add(-1., u0_owned);
-    std::vector<double> r = term.jacobian_product(u0, difference, kink_width);
+    std::vector<double> r = term.jacobian_product(u0, difference);
     for (unsigned int i = 0; i < r.size(); ++i)
       r[i] += residual0[i];
     return r;
@@ -230,7 +225,7 @@ namespace PhaseField
                                    const double  factor,
                                    Vector       &g) const
   {
-    term.add_transposed(u0, linear_residual(u), factor, g, kink_width);
+    term.add_transposed(u0, linear_residual(u), factor, g);
     Vector difference(u);
     difference.add(-1., u0_owned);
     add_curvature(difference, factor, g);
@@ -245,8 +240,7 @@ namespace PhaseField
                                         const double  factor,
                                         Vector       &y) const
   {
-    term.add_transposed(
-      u0, term.jacobian_product(u0, d, kink_width), factor, y, kink_width);
+    term.add_transposed(u0, term.jacobian_product(u0, d), factor, y);
     add_curvature(d, factor, y);
   }
 

@@ -127,11 +127,8 @@ namespace PhaseField
      * @p constraints (hanging nodes pass their derivative to their
      * masters). With r_q = 2 gamma w_q (alpha[u] - alpha*)(x'_q) this is
      * the exact derivative of the discrete mismatch j[u], wherever no
-     * column difference u(x', top) - u(x', bottom) is zero. Column
-     * differences of at most @p kink_width in magnitude count as kinks
-     * (derivative 0): the Gauss-Newton model of the monolithic contour
-     * step (MismatchModel) freezes them. Collective (compresses
-     * @p gradient).
+     * column difference u(x', top) - u(x', bottom) is zero. Collective
+     * (compresses @p gradient).
      */
     template <int dim>
     void
@@ -141,8 +138,7 @@ namespace PhaseField
       const Vector                            &u,
       const LabelingGrid<dim>                 &grid,
       const std::vector<double>               &r,
-      Vector                                  &gradient,
-      const double                             kink_width = 0);
+      Vector                                  &gradient);
 
     /**
      * The curvature of the labeling's quadratic majoriser at @p u0 applied
@@ -172,19 +168,16 @@ namespace PhaseField
     /**
      * The linearised labeling J d = alpha'[@p u](@p d) at every point of
      * @p grid: (1/2) Int sign(d_d u) d_d d dx_d by the same column
-     * integrals as labeling() (zero where the sign has a kink, and where
-     * the column difference is at most @p kink_width in magnitude), so
-     * that add_labeling_derivative() with r and the same @p kink_width is
-     * J^T r. @p u and @p d ghosted, @p d with its constraints distributed.
-     * Collective.
+     * integrals as labeling() (zero where the sign has a kink), so that
+     * add_labeling_derivative() with r is J^T r. @p u and @p d ghosted,
+     * @p d with its constraints distributed. Collective.
      */
     template <int dim>
     std::vector<double>
     labeling_derivative(const dealii::DoFHandler<dim> &dof_handler,
                         const Vector                  &u,
                         const Vector                  &d,
-                        const LabelingGrid<dim>       &grid,
-                        const double                   kink_width = 0);
+                        const LabelingGrid<dim>       &grid);
 
     /**
      * The labeling, at the points of @p grid, of the Q1 interpolant of

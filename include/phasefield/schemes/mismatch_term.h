@@ -98,25 +98,20 @@ namespace PhaseField
 
     /**
      * J @p d, the labeling linearised at the ghosted state @p u (its
-     * signs; column differences of at most @p kink_width frozen), for a
-     * locally owned @p d (constraints distributed here).
+     * signs), for a locally owned @p d (constraints distributed here).
      */
     std::vector<double>
-    jacobian_product(const Vector &u,
-                     const Vector &d,
-                     const double  kink_width = 0) const;
+    jacobian_product(const Vector &u, const Vector &d) const;
 
     /**
      * @p y += @p factor J^T 2 gamma W @p residual, for a residual on the
-     * grid points (the ghosted state @p u fixes the signs; column
-     * differences of at most @p kink_width frozen).
+     * grid points (the ghosted state @p u fixes the signs).
      */
     void
     add_transposed(const Vector              &u,
                    const std::vector<double> &residual,
                    const double               factor,
-                   Vector                    &y,
-                   const double               kink_width = 0) const;
+                   Vector                    &y) const;
 
     const Discretization<dim>               &discretization;
     const HuffmanLabeling::LabelingGrid<dim> labeling_grid;
@@ -127,21 +122,32 @@ namespace PhaseField
 
 
   /**
-   * The Gauss-Newton model of the mismatch at a state U0,
+   * The step model of the mismatch at a state U0 (the start of a
+   * monolithic contour step): the second-order Taylor model at U0 of j
+   * with every column difference's |s| replaced by its quadratic
+   * majoriser (s^2 + s0^2) / (2 |s0|) (equal to |s| at s0 = s(U0)),
    *
-   *   j_0[U] = gamma Int (alpha[U0] + J0 (U - U0) - alpha*)^2 dx',
+   *   j_0[U] = gamma Int (alpha[U0] + J0 (U - U0) - alpha*)^2 dx'
+   *            + (1/2) (U - U0) . C (U - U0),
    *
    * with J0 the labeling linearised at U0 (the signs of its column
-   * differences), in which the column differences of U0 smaller than
-   * kink_width in magnitude are frozen (J0 is zero there). alpha[U] is
-   * piecewise linear in U, so j_0 = j wherever no column difference has
-   * changed sign since U0 and the frozen ones have not changed; where one
-   * has, j_0 is the quadratic continuation of j across the kink. Its
-   * gradient is 2 gamma
-   * J0^T W (alpha[U0] + J0 (U - U0) - alpha*) and its Hessian exactly 2 gamma
-   * J0^T W J0 (the Gauss-Newton product of j at U0), so Newton's method on a
-   * step with it converges where it cycles on j itself (the kinks); the time
-   * loop accepts the step by the energy law with j (the merit function).
+   * differences) and C the curvature of the majoriser where alpha[U0] >
+   * alpha* (HuffmanLabeling::add_kink_curvature_product(), weights
+   * gamma w_q (alpha - alpha*), 1/|s0| floored at curvature_floor). So
+   * j_0 = j at U0 with the same gradient, and its Hessian 2 gamma J0^T W
+   * J0 + C is the Gauss-Newton product of j plus a positive part.
+   *
+   * Why C: alpha[U] is piecewise linear in U with kinks where a column
+   * difference s changes sign, and j rises as |s| at a kink where alpha >
+   * alpha* (too many labels), most of all in the flat parts of the
+   * profile where |s0| is tiny. Newton's method on j itself cycled there
+   * (the residual alternating between two values); on the Gauss-Newton
+   * model without C the steps crossed those kinks, and j rose where the
+   * model fell, so that the energy law with j failed at every tau down to
+   * Tau/16 (doc/shape_from_contour.md, "The monolithic coupling"). C keeps
+   * the steps from crossing them: a step of the model then lowers j to
+   * second order, and the time loop accepts it by the energy law with j
+   * (the merit function).
    */
   template <int dim>
   class MismatchModel : public EnergyTerm
@@ -166,18 +172,6 @@ namespace PhaseField
                       const Vector &d,
                       const double  factor,
                       Vector       &y) const override;
-
-    /**
-     * Column differences |U0(x', top) - U0(x', bottom)| (U jumps by 2
-     * across the interface) at most this are frozen in the model: there
-     * the sign of J0 is that of round-off or of the flat tanh tails, and
-     * a step crosses zero, where j rises as |s| while j_0 falls. With only
-     * the exact zeros frozen, the monolithic step of the built-in default
-     * at level 5 broke the energy law with j from step 8 on at every
-     * tau down to Tau/16, by the same 0.004 (2026-11-29,
-     * doc/shape_from_contour.md, "The monolithic coupling").
-     */
-    static constexpr double kink_width = 0;
 
     /**
      * The smallest |s0| in the curvature 1/|s0| of the majoriser
