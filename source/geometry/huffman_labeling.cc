@@ -303,8 +303,7 @@ namespace PhaseField
             const std::array<double, n_corners<dim>> &w,
             const ColumnDofs<dim>                    &dofs) {
           // d/du (1/2)|difference|; zero where the sign has a kink
-          return 0.5 * r[i] *
-                 kink_sign(column_difference<dim>(u, w, dofs));
+          return 0.5 * r[i] * kink_sign(column_difference<dim>(u, w, dofs));
         },
         gradient);
     }
@@ -355,8 +354,8 @@ namespace PhaseField
             const ColumnDofs<dim>                    &dofs) {
           const double difference = column_difference<dim>(u, w, dofs);
           // d/du (1/2)|difference|; zero where the sign has a kink
-          jd[i] += 0.5 * kink_sign(difference) *
-                   column_difference<dim>(d, w, dofs);
+          jd[i] +=
+            0.5 * kink_sign(difference) * column_difference<dim>(d, w, dofs);
         },
         [](const ColumnDofs<dim> &) {});
       Utilities::MPI::sum(jd, u.get_mpi_communicator(), jd);
