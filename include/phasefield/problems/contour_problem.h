@@ -266,9 +266,11 @@ namespace PhaseField
     static constexpr double step_growth = 2;
 
     /**
-     * The smallest step size of the control as a multiple of Tau: a
-     * halving below it is the time loop's, not kept for the next steps
-     * (2^-6, the time loop's default number of halvings).
+     * The smallest step size the control keeps for the next steps, as a
+     * multiple of Tau: 2^-6, six halvings (the time loop halves one step
+     * at most `Newton / Maximum step halvings` times, 4 by default), so
+     * that a few failed steps do not leave the level at a size that it
+     * needs many easy steps to regrow from.
      */
     static constexpr double min_tau_factor = 1. / 64;
 

@@ -132,7 +132,7 @@ namespace PhaseField
      * alpha crosses alpha*, so that the energy law with the term itself
      * holds to second order in the step, not to round-off. Measured on the
      * built-in default at level 5 near the level's stationary state: rises
-     * of up to 3e-5 relative (doc/shape_from_contour.md, "The monolithic
+     * of up to 1.4e-5 relative (doc/shape_from_contour.md, "The monolithic
      * coupling").
      */
     static constexpr double data_term_energy_law_tolerance = 1e-4;
