@@ -500,6 +500,7 @@ namespace PhaseField
   double
   ContourProblem<dim>::next_step_size(const double scheduled) const
   {
+    last_scheduled = scheduled;
     return parameters.time_stepping.step_size_control ? tau_factor * scheduled :
                                                         scheduled;
   }
@@ -531,7 +532,9 @@ namespace PhaseField
     (void)step;
     if (!parameters.time_stepping.step_size_control)
       return;
-    const double level_tau = this->level_parameters.model.tau;
+    // the factor is relative to the scheduled size (Tau, or a ramp-up
+    // size) that the step's size was made from
+    const double level_tau = last_scheduled;
     if (tau < tried_tau)
       {
         tau_factor = std::max(tau / level_tau, min_tau_factor);

@@ -79,8 +79,9 @@ namespace PhaseField
     }
 
     /**
-     * `Time stepping / Step size control`: the level's Tau times the
-     * factor of step_accepted(); otherwise @p scheduled.
+     * `Time stepping / Step size control`: @p scheduled (the level's Tau,
+     * or a ramp-up size) times the factor of step_accepted(); otherwise
+     * @p scheduled.
      */
     double
     next_step_size(const double scheduled) const override;
@@ -367,6 +368,8 @@ namespace PhaseField
      * the level's Tau (1 at the start of every level).
      */
     double tau_factor = 1;
+    /** The scheduled size of the step next_step_size() was last asked for. */
+    mutable double last_scheduled = 0;
     /** Target = image: the image. */
     Images::GrayImage target_image;
     /**
