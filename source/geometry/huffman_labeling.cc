@@ -108,6 +108,16 @@ namespace PhaseField
             }
       }
 
+      /**
+       * The derivative of |s| at the column difference @p s: its sign, 0
+       * at the kink.
+       */
+      inline double
+      kink_sign(const double s)
+      {
+        return (s > 0) - (s < 0);
+      }
+
       /** u(x', top) - u(x', bottom) in a cell, from its vertex values. */
       template <int dim>
       double
@@ -230,6 +240,51 @@ namespace PhaseField
 
 
 
+    namespace
+    {
+      /**
+       * @p result += sum over the column points i and cells of
+       * factor(i, w, dofs) times the derivative of the cell's column
+       * difference at the point with respect to the DoF values, through
+       * @p constraints: the transposed column integrals behind
+       * add_labeling_derivative() and add_kink_curvature_product().
+       * Collective (compresses @p result).
+       */
+      template <int dim, typename Factor>
+      void
+      add_column_gradients(const DoFHandler<dim>           &dof_handler,
+                           const AffineConstraints<double> &constraints,
+                           const LabelingGrid<dim>         &grid,
+                           const Factor                    &factor,
+                           Vector                          &result)
+      {
+        constexpr unsigned int               nc = n_corners<dim>;
+        dealii::Vector<double>               local(2 * nc);
+        std::vector<types::global_dof_index> local_dofs(2 * nc);
+        for_each_column_point(
+          dof_handler,
+          grid,
+          [&](const unsigned int            i,
+              const std::array<double, nc> &w,
+              const ColumnDofs<dim>        &dofs) {
+            const double f = factor(i, w, dofs);
+            for (unsigned int c = 0; c < nc; ++c)
+              {
+                local[c + nc] += f * w[c];
+                local[c] -= f * w[c];
+              }
+          },
+          [&](const ColumnDofs<dim> &dofs) {
+            std::copy(dofs.begin(), dofs.end(), local_dofs.begin());
+            constraints.distribute_local_to_global(local, local_dofs, result);
+            local = 0;
+          });
+        result.compress(VectorOperation::add);
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     add_labeling_derivative(const DoFHandler<dim>           &dof_handler,
@@ -240,31 +295,45 @@ namespace PhaseField
                             Vector                          &gradient)
     {
       AssertDimension(r.size(), grid.size());
-      constexpr unsigned int               nc = n_corners<dim>;
-      dealii::Vector<double>               local(2 * nc);
-      std::vector<types::global_dof_index> local_dofs(2 * nc);
-      for_each_column_point(
+      add_column_gradients(
         dof_handler,
+        constraints,
         grid,
-        [&](const unsigned int            i,
-            const std::array<double, nc> &w,
-            const ColumnDofs<dim>        &dofs) {
-          const double difference = column_difference<dim>(u, w, dofs);
+        [&](const unsigned int                        i,
+            const std::array<double, n_corners<dim>> &w,
+            const ColumnDofs<dim>                    &dofs) {
           // d/du (1/2)|difference|; zero where the sign has a kink
-          const double factor =
-            0.5 * r[i] * ((difference > 0) - (difference < 0));
-          for (unsigned int c = 0; c < nc; ++c)
-            {
-              local[c + nc] += factor * w[c];
-              local[c] -= factor * w[c];
-            }
+          return 0.5 * r[i] * kink_sign(column_difference<dim>(u, w, dofs));
         },
-        [&](const ColumnDofs<dim> &dofs) {
-          std::copy(dofs.begin(), dofs.end(), local_dofs.begin());
-          constraints.distribute_local_to_global(local, local_dofs, gradient);
-          local = 0;
-        });
-      gradient.compress(VectorOperation::add);
+        gradient);
+    }
+
+
+
+    template <int dim>
+    void
+    add_kink_curvature_product(const DoFHandler<dim>           &dof_handler,
+                               const AffineConstraints<double> &constraints,
+                               const Vector                    &u0,
+                               const Vector                    &d,
+                               const LabelingGrid<dim>         &grid,
+                               const std::vector<double>       &c,
+                               const double                     floor,
+                               Vector                          &y)
+    {
+      AssertDimension(c.size(), grid.size());
+      add_column_gradients(
+        dof_handler,
+        constraints,
+        grid,
+        [&](const unsigned int                        i,
+            const std::array<double, n_corners<dim>> &w,
+            const ColumnDofs<dim>                    &dofs) {
+          const double s0 = column_difference<dim>(u0, w, dofs);
+          return c[i] * column_difference<dim>(d, w, dofs) /
+                 std::max(std::abs(s0), floor);
+        },
+        y);
     }
 
 
@@ -285,8 +354,8 @@ namespace PhaseField
             const ColumnDofs<dim>                    &dofs) {
           const double difference = column_difference<dim>(u, w, dofs);
           // d/du (1/2)|difference|; zero where the sign has a kink
-          jd[i] += 0.5 * ((difference > 0) - (difference < 0)) *
-                   column_difference<dim>(d, w, dofs);
+          jd[i] +=
+            0.5 * kink_sign(difference) * column_difference<dim>(d, w, dofs);
         },
         [](const ColumnDofs<dim> &) {});
       Utilities::MPI::sum(jd, u.get_mpi_communicator(), jd);
@@ -425,6 +494,14 @@ namespace PhaseField
                                                        const LabelingGrid<dim> &,         \
                                                        const std::vector<double> &,       \
                                                        Vector &);                         \
+  template void add_kink_curvature_product(const DoFHandler<dim> &,                       \
+                                           const AffineConstraints<double> &,             \
+                                           const Vector &,                                \
+                                           const Vector &,                                \
+                                           const LabelingGrid<dim> &,                     \
+                                           const std::vector<double> &,                   \
+                                           const double,                                  \
+                                           Vector &);                                     \
   template std::vector<double> labeling_of_function(const Function<dim> &,                \
                                                     const LabelingGrid<dim> &,            \
                                                     const MPI_Comm);                      \

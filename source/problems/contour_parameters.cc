@@ -1,3 +1,4 @@
+#include <cmath>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/contour_parameters.h>
 #include <phasefield/schemes/scheme_registry.h>
@@ -212,6 +213,81 @@ namespace PhaseField
 
 
   void
+  ContourTimeSteppingParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time stepping");
+    prm.declare_entry(
+      "Contour coupling",
+      "split",
+      Patterns::Selection("split|monolithic"),
+      "How a step couples the mismatch j with the nested step of the "
+      "regularisation. split: thesis Algorithm 6.1 (nested step with "
+      "tau/2, explicit mismatch step eps M (U - U') = -tau j'(U'), nested "
+      "step with tau/2). monolithic: one nested step that minimises eps "
+      "||u - u^k||^2 + 2 tau (e_reg[u] + j[u]) (thesis 6.5, 7.3), solved by "
+      "Newton's method with the Gauss-Newton Hessian J^T 2 gamma W J of j "
+      "(the descent method on that energy where Newton fails) and accepted "
+      "if the energy law of the whole step holds: mu W + eta A + (3/4) j + "
+      "dissipation must not exceed its value before the step (otherwise "
+      "the step is halved). Only with <Time stepping / Scheme> = nested.");
+    prm.declare_entry(
+      "Step size control",
+      "false",
+      Patterns::Bool(),
+      "Grow and shrink tau (doc/shape_from_contour.md, \"Step-size "
+      "control\"): after an accepted step that took at most <Easy Newton "
+      "iterations> Newton iterations at the size it tried and decreased "
+      "the energy by at least twice its dissipation (what the minimiser of "
+      "a convex step energy does), the next step tries twice the size, at "
+      "most <Largest tau factor> times Tau; after a halved step it tries "
+      "the halved size. false: every step tries Tau.");
+    prm.declare_entry("Largest tau factor",
+                      "16",
+                      Patterns::Anything(),
+                      "Step size control: the largest step size as a "
+                      "multiple of the level's Tau (>= 1).");
+    prm.declare_entry("Easy Newton iterations",
+                      "5",
+                      Patterns::Anything(),
+                      "Step size control: a step with at most this many "
+                      "Newton iterations (both half steps of the split "
+                      "coupling together) converged easily (>= 1).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContourTimeSteppingParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time stepping");
+    coupling                 = prm.get("Contour coupling") == "monolithic" ?
+                                 ContourCoupling::monolithic :
+                                 ContourCoupling::split;
+    step_size_control        = prm.get_bool("Step size control");
+    const std::string factor = prm.get("Largest tau factor");
+    const std::string easy   = prm.get("Easy Newton iterations");
+    prm.leave_subsection();
+    largest_tau_factor =
+      evaluate_expression_in_h(factor, 1, "Time stepping / Largest tau factor");
+    if (!(largest_tau_factor >= 1))
+      throw InputError("The parameter <Time stepping / Largest tau factor> "
+                       "must be at least 1, but is " +
+                       factor + ".");
+    const double iterations =
+      evaluate_expression_in_h(easy,
+                               1,
+                               "Time stepping / Easy Newton iterations");
+    if (!(iterations >= 1) || iterations != std::floor(iterations))
+      throw InputError("The parameter <Time stepping / Easy Newton "
+                       "iterations> must be a positive integer, but is " +
+                       easy + ".");
+    easy_iterations = static_cast<unsigned int>(iterations);
+  }
+
+
+
+  void
   ContourParameters::declare_parameters(ParameterHandler &prm)
   {
     WillmoreParameters::declare_parameters(prm, "", "", true);
@@ -228,6 +304,7 @@ namespace PhaseField
     TargetParameters::declare_parameters(prm);
     ContourModelParameters::declare_parameters(prm);
     MultilevelParameters::declare_parameters(prm);
+    ContourTimeSteppingParameters::declare_parameters(prm);
   }
 
 
@@ -241,6 +318,7 @@ namespace PhaseField
     multilevel.parse_parameters(prm,
                                 willmore.mesh.finest_level,
                                 willmore.mesh.coarsest_level);
+    time_stepping.parse_parameters(prm);
     ModelTerms needed;
     needed.area_term       = true;
     needed.willmore_weight = true;

@@ -69,8 +69,27 @@ namespace PhaseField
       this->pcout << ' ' << level;
     this->pcout << ", mu = " << parameters.model.willmore_weight
                 << ", eta = " << parameters.model.area_weight
-                << ", gamma = " << parameters.model.mismatch_weight
+                << ", gamma = " << parameters.model.mismatch_weight << ", "
+                << (parameters.time_stepping.coupling ==
+                        ContourCoupling::monolithic ?
+                      "monolithic coupling" :
+                      "split coupling (Algorithm 6.1)")
+                << (parameters.time_stepping.step_size_control ?
+                      ", step size control" :
+                      "")
                 << std::endl;
+  }
+
+
+
+  template <int dim>
+  OuterEnergy
+  ContourProblem<dim>::scheme_outer_energy() const
+  {
+    OuterEnergy outer = this->setup.outer_energy;
+    if (parameters.time_stepping.coupling == ContourCoupling::monolithic)
+      outer.data_term = &level_mismatch;
+    return outer;
   }
 
 
@@ -92,6 +111,9 @@ namespace PhaseField
           this->time_loop_settings(this->level_parameters);
         // a level whose steps are done continues with the next one
         settings.refuse_empty_resume = false;
+        if (parameters.time_stepping.step_size_control)
+          settings.largest_step_factor =
+            parameters.time_stepping.largest_tau_factor;
         TimeLoop<dim> time_loop(settings,
                                 this->discretization,
                                 *this->scheme,
@@ -181,6 +203,16 @@ namespace PhaseField
                   "or <Time stepping / Tau>, or larger <Newton / Maximum "
                   "step halvings>.";
           break;
+        case SubStep::monolithic_step:
+          text << "the monolithic step (nested step with the mismatch in its "
+                  "energy, <Time stepping / Contour coupling> = monolithic) "
+                  "with tau = "
+               << tau
+               << " did not converge or broke the energy law of its whole "
+                  "energy. Try a smaller <Time stepping / Tau> or <Model / "
+                  "Mismatch weight>, or larger <Newton / Maximum step "
+                  "halvings> or <Newton / Maximum descent iterations>.";
+          break;
       }
     // without deal.II's indentation
     const std::size_t begin = reason.find_first_not_of(" \n");
@@ -235,7 +267,13 @@ namespace PhaseField
                  Checkpoint::exact_value(parameters.model.area_weight)},
                 {"Model / Mismatch weight",
                  Checkpoint::exact_value(parameters.model.mismatch_weight)},
-                {"Multilevel / Levels", Checkpoint::exact_values(levels_so_far)}};
+                {"Multilevel / Levels", Checkpoint::exact_values(levels_so_far)},
+                {"Time stepping / Contour coupling",
+       parameters.time_stepping.coupling == ContourCoupling::monolithic ?
+                   "monolithic" :
+                   "split"},
+                {"Time stepping / Step size control",
+       parameters.time_stepping.step_size_control ? "true" : "false"}};
     if (parameters.target.is_image())
       {
         recorded.emplace_back("Target / Shape", "image");
@@ -261,6 +299,10 @@ namespace PhaseField
     std::vector<double> data{double(level_index),
                              double(this->level_parameters.mesh.finest_level)};
     data.insert(data.end(), criterion_history.begin(), criterion_history.end());
+    // the step-size control's state last (checkpoints without it keep
+    // their layout)
+    if (parameters.time_stepping.step_size_control)
+      data.push_back(tau_factor);
     return data;
   }
 
@@ -272,8 +314,11 @@ namespace PhaseField
                                   const std::vector<double> &problem_data)
   {
     (void)state;
-    criterion_history.assign(problem_data.begin() + n_level_entries,
-                             problem_data.end());
+    auto end = problem_data.end();
+    if (parameters.time_stepping.step_size_control &&
+        problem_data.size() > n_level_entries)
+      tau_factor = *(--end);
+    criterion_history.assign(problem_data.begin() + n_level_entries, end);
   }
 
 
@@ -292,6 +337,7 @@ namespace PhaseField
       target_on(HuffmanLabeling::LabelingGrid<dim>(level)),
       parameters.model.mismatch_weight);
     criterion_history.clear();
+    tau_factor = 1;
     this->pcout << "level " << this->level_parameters.mesh.finest_level
                 << ": h = " << this->level_parameters.mesh.h()
                 << ", epsilon = " << this->level_parameters.model.epsilon
@@ -312,6 +358,10 @@ namespace PhaseField
   ContourProblem<dim>::move_to_level(const unsigned int index)
   {
     const WillmoreParameters next = parameters.for_level(index);
+    // the coarse level's term is on the coarse pixel grid, which the
+    // refined cells do not fit: no data term until start_level() made the
+    // next one (the initialisation below does not evaluate it)
+    mismatch_term.reset();
     {
       TimerOutput::Scope t(this->computing_timer, "mesh: level transition");
       // U will be sharpened to the finer epsilon: |U_sharp| < tanh(b) iff
@@ -390,6 +440,16 @@ namespace PhaseField
                                BlockVector             &state,
                                const double             tau)
   {
+    if (parameters.time_stepping.coupling == ContourCoupling::monolithic)
+      {
+        // one nested step with the mismatch in its outer energy
+        // (scheme_outer_energy()); the time loop checks its energy law
+        unfinished_sub_step     = {SubStep::monolithic_step, tau};
+        const StepReport report = scheme.advance(old_state, state, tau);
+        if (report.converged)
+          unfinished_sub_step.reset();
+        return report;
+      }
     // the time loop keeps P for steps of size tau; the nested sub-steps
     // have tau/2
     const double half = 0.5 * tau;
@@ -432,6 +492,70 @@ namespace PhaseField
     gradient.scale(this->discretization.get_operators().inverse_lumped_mass);
     state.block(0).add(-tau / this->level_parameters.model.epsilon, gradient);
     this->discretization.get_constraints().distribute(state.block(0));
+  }
+
+
+
+  template <int dim>
+  double
+  ContourProblem<dim>::next_step_size(const double scheduled) const
+  {
+    last_scheduled = scheduled;
+    return parameters.time_stepping.step_size_control ? tau_factor * scheduled :
+                                                        scheduled;
+  }
+
+
+
+  template <int dim>
+  double
+  ContourProblem<dim>::merit(const BlockVector &state,
+                             const Energies    &energies) const
+  {
+    return Constants::geometric_unit *
+           total_energy(energies, mismatch(state).energy);
+  }
+
+
+
+  template <int dim>
+  void
+  ContourProblem<dim>::step_accepted(const unsigned int step,
+                                     const BlockVector &old_state,
+                                     const Energies    &old_energies,
+                                     const BlockVector &state,
+                                     const Energies    &energies,
+                                     const StepReport  &report,
+                                     const double       tau,
+                                     const double       tried_tau)
+  {
+    (void)step;
+    if (!parameters.time_stepping.step_size_control)
+      return;
+    // the factor is relative to the scheduled size (Tau, or a ramp-up
+    // size) that the step's size was made from
+    const double level_tau = last_scheduled;
+    if (tau < tried_tau)
+      {
+        tau_factor = std::max(tau / level_tau, min_tau_factor);
+        return;
+      }
+    const double decrease =
+      merit(old_state, old_energies) - merit(state, energies);
+    const double dissipation = this->scheme->dissipation(old_state, state, tau);
+    const bool   easy =
+      report.newton_iterations <= parameters.time_stepping.easy_iterations;
+    if (easy && decrease >= 2 * dissipation)
+      tau_factor = std::min(step_growth * tau / level_tau,
+                            parameters.time_stepping.largest_tau_factor);
+    else
+      tau_factor = tau / level_tau;
+    if (this->willmore_parameters.output.verbose)
+      this->pcout << "  step size control: decrease " << decrease
+                  << ", dissipation " << dissipation << ", "
+                  << report.newton_iterations
+                  << " Newton iterations: next tau = " << tau_factor << " Tau"
+                  << std::endl;
   }
 
 

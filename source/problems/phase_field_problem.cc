@@ -60,7 +60,7 @@ namespace PhaseField
     settings.scheme        = parameters.model.scheme;
     settings.epsilon       = parameters.model.epsilon;
     settings.inner_tau     = parameters.model.inner_tau;
-    settings.outer_energy  = setup.outer_energy;
+    settings.outer_energy  = scheme_outer_energy();
     settings.newton        = parameters.newton;
     settings.linear_solver = parameters.linear_solver;
     settings.verbose       = parameters.output.verbose;

@@ -110,6 +110,67 @@ namespace PhaseField
 
 
 
+  ScaledTerm::ScaledTerm(const EnergyTerm &term, const double scale)
+    : term(term)
+    , scale(scale)
+  {}
+
+
+
+  ScaledTerm::ScaledTerm(std::unique_ptr<EnergyTerm> owned_term,
+                         const double                scale)
+    : owned(std::move(owned_term))
+    , term(*owned)
+    , scale(scale)
+  {}
+
+
+
+  double
+  ScaledTerm::value(const Vector &u) const
+  {
+    return scale * term.value(u);
+  }
+
+
+
+  void
+  ScaledTerm::add_gradient(const Vector &u,
+                           const double  factor,
+                           Vector       &g) const
+  {
+    term.add_gradient(u, scale * factor, g);
+  }
+
+
+
+  void
+  ScaledTerm::add_hessian_vmult(const Vector &u,
+                                const Vector &d,
+                                const double  factor,
+                                Vector       &y) const
+  {
+    term.add_hessian_vmult(u, d, scale * factor, y);
+  }
+
+
+
+  std::unique_ptr<EnergyTerm>
+  make_data_term(const OuterEnergy &outer,
+                 const double       tau,
+                 const double       epsilon,
+                 const Vector      &old_u)
+  {
+    if (outer.data_term == nullptr)
+      return nullptr;
+    std::unique_ptr<EnergyTerm> model = outer.data_term->step_model(old_u);
+    if (model)
+      return std::make_unique<ScaledTerm>(std::move(model), tau / epsilon);
+    return std::make_unique<ScaledTerm>(*outer.data_term, tau / epsilon);
+  }
+
+
+
   template <int dim>
   std::vector<std::unique_ptr<EnergyTerm>>
   make_outer_energy_terms(const OuterEnergy          &outer,

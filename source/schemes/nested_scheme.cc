@@ -326,6 +326,17 @@ namespace PhaseField
 
   template <int dim>
   double
+  NestedScheme<dim>::energy_law_tolerance() const
+  {
+    return settings.outer_energy.data_term != nullptr ?
+             data_term_energy_law_tolerance :
+             TimeSteppingScheme<dim>::energy_law_tolerance();
+  }
+
+
+
+  template <int dim>
+  double
   NestedScheme<dim>::dissipation(const BlockVector &old_state,
                                  const BlockVector &state,
                                  const double       tau) const

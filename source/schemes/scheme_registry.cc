@@ -193,6 +193,7 @@ namespace PhaseField
     terms.forcing          = settings.outer_energy.forcing != nullptr;
     terms.biharmonic_model = !settings.double_well;
     terms.willmore_weight  = settings.outer_energy.willmore_weight != 1;
+    terms.mismatch_term    = settings.outer_energy.data_term != nullptr;
     return terms;
   }
 

@@ -62,7 +62,7 @@ namespace PhaseField
     // the scheduled sizes are the largest a step takes
     double longest = 0;
     for (unsigned int step = 1; step <= saved.step; ++step)
-      longest += settings.model.step_size(step);
+      longest += settings.largest_step_factor * settings.model.step_size(step);
     constexpr double roundoff = 1e-12;
     if (saved.time <= longest * (1 + roundoff))
       return;
@@ -304,6 +304,14 @@ namespace PhaseField
           predictor.record(old_state, state, tau, scheme.start_extrapolation());
         if (settings.regrow_step_size)
           step_size_limit = tau < tried_tau ? tau : 2 * tau;
+        client.step_accepted(step,
+                             old_state,
+                             old_energies,
+                             state,
+                             result.energies,
+                             result.report,
+                             tau,
+                             tried_tau);
         state_tau = tau;
         time += tau;
         last_step = step;
@@ -402,7 +410,8 @@ namespace PhaseField
   double
   TimeLoop<dim>::first_step_size(const unsigned int step) const
   {
-    const double scheduled = settings.model.step_size(step - step_offset);
+    const double scheduled =
+      client.next_step_size(settings.model.step_size(step - step_offset));
     return step_size_limit > 0 ? std::min(scheduled, step_size_limit) :
                                  scheduled;
   }

@@ -141,6 +141,31 @@ namespace PhaseField
       Vector                                  &gradient);
 
     /**
+     * The curvature of the labeling's quadratic majoriser at @p u0 applied
+     * to @p d: each column difference s of a cell at a point is bounded by
+     * |s| <= (s^2 + s0^2) / (2 |s0|) (equal at s0, the majoriser of
+     * iteratively reweighted least squares), whose second derivative is
+     * 1 / |s0|. Adds to @p y the sum over the points q and the cells above
+     * them of @p c_q s(d) / max(|s0|, @p floor) times the derivative of s
+     * with respect to the DoF values, through @p constraints. With
+     * c_q = gamma w_q max(alpha_q - alpha*_q, 0) this is the part of the
+     * Hessian of the majorised mismatch beyond J^T 2 gamma W J (the
+     * MismatchModel). @p u0 and @p d ghosted, @p d with its constraints
+     * distributed. Collective (compresses @p y).
+     */
+    template <int dim>
+    void
+    add_kink_curvature_product(
+      const dealii::DoFHandler<dim>           &dof_handler,
+      const dealii::AffineConstraints<double> &constraints,
+      const Vector                            &u0,
+      const Vector                            &d,
+      const LabelingGrid<dim>                 &grid,
+      const std::vector<double>               &c,
+      const double                             floor,
+      Vector                                  &y);
+
+    /**
      * The linearised labeling J d = alpha'[@p u](@p d) at every point of
      * @p grid: (1/2) Int sign(d_d u) d_d d dx_d by the same column
      * integrals as labeling() (zero where the sign has a kink), so that

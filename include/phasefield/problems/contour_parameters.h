@@ -112,6 +112,43 @@ namespace PhaseField
                      const unsigned int        coarsest_level);
   };
 
+  /** How a step couples the mismatch with the nested step. */
+  enum class ContourCoupling
+  {
+    /**
+     * Thesis Algorithm 6.1: nested step with tau/2, explicit mismatch step
+     * with tau, nested step with tau/2.
+     */
+    split,
+    /**
+     * One nested step whose outer energy holds the mismatch j
+     * (OuterEnergy::data_term): the minimiser of eps ||u-u^k||^2 +
+     * 2 tau (e_reg + j), with the energy law of the whole step.
+     */
+    monolithic
+  };
+
+  /**
+   * The entries of subsection `Time stepping` of shape_from_contour beyond
+   * willmore_flow's: the coupling and the step-size control
+   * (ContourProblem::next_step_size()).
+   */
+  struct ContourTimeSteppingParameters
+  {
+    ContourCoupling coupling;
+    /** Grow and shrink tau (ContourProblem::step_accepted()). */
+    bool step_size_control;
+    /** The largest tau as a multiple of the level's Tau. */
+    double largest_tau_factor;
+    /** A step with at most this many Newton iterations converged easily. */
+    unsigned int easy_iterations;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /** All parameters of shape_from_contour. */
   struct ContourParameters
   {
@@ -120,10 +157,11 @@ namespace PhaseField
      * shape); its finest level and step count are those of the level
      * being computed (for_level()).
      */
-    WillmoreParameters     willmore;
-    TargetParameters       target;
-    ContourModelParameters model;
-    MultilevelParameters   multilevel;
+    WillmoreParameters            willmore;
+    TargetParameters              target;
+    ContourModelParameters        model;
+    MultilevelParameters          multilevel;
+    ContourTimeSteppingParameters time_stepping;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

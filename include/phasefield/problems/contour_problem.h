@@ -67,12 +67,44 @@ namespace PhaseField
             BlockVector             &state,
             const double             tau) override;
 
-    /** The split step has no energy law of the nested scheme. */
+    /**
+     * The split step has no energy law of the nested scheme; the
+     * monolithic step has that of its whole energy, mismatch included
+     * (the merit function of its acceptance).
+     */
     bool
     energy_law_applies() const override
     {
-      return false;
+      return parameters.time_stepping.coupling == ContourCoupling::monolithic;
     }
+
+    /**
+     * `Time stepping / Step size control`: @p scheduled (the level's Tau,
+     * or a ramp-up size) times the factor of step_accepted(); otherwise
+     * @p scheduled.
+     */
+    double
+    next_step_size(const double scheduled) const override;
+
+    /**
+     * The step-size rule: after a step that was halved, the next one tries
+     * the size it took; after a step taken at the size it tried with at
+     * most `Easy Newton iterations` Newton iterations whose merit
+     * decrease is as a convex step energy predicts, E^k - E^{k+1} >=
+     * 2 D (E = mu W + eta A + (3/4) j in geometric units, D the
+     * dissipation eps ||U - U^k||_M^2 / (2 tau) in the same units; the
+     * minimiser of a convex step energy satisfies it), twice that size, at
+     * most `Largest tau factor` times Tau. Otherwise the same size.
+     */
+    void
+    step_accepted(const unsigned int step,
+                  const BlockVector &old_state,
+                  const Energies    &old_energies,
+                  const BlockVector &state,
+                  const Energies    &energies,
+                  const StepReport  &report,
+                  const double       tau,
+                  const double       tried_tau) override;
 
     /**
      * No: in the first steps of a level the mismatch sub-step moves the
@@ -134,6 +166,14 @@ namespace PhaseField
 
   protected:
     /**
+     * The setup's outer energy, with the level's mismatch j as its data
+     * term for the monolithic coupling (the scheme of every level refers
+     * to level_mismatch, which forwards to the current level's term).
+     */
+    OuterEnergy
+    scheme_outer_energy() const override;
+
+    /**
      * The first level of `Multilevel / Levels`, or with `Checkpoint /
      * Resume` the level of the checkpoint (resumed_level_index()).
      */
@@ -154,13 +194,93 @@ namespace PhaseField
     run_time_loops() override;
 
   private:
-    /** The sub-steps of Algorithm 6.1, in their order. */
+    /**
+     * The sub-steps of Algorithm 6.1, in their order, and the one step of
+     * the monolithic coupling.
+     */
     enum class SubStep
     {
       first_nested_step,
       mismatch_step,
-      second_nested_step
+      second_nested_step,
+      monolithic_step
     };
+
+    /**
+     * The mismatch of the current level as an EnergyTerm of fixed address
+     * (OuterEnergy::data_term of the schemes): forwards to
+     * ContourProblem::mismatch_term, which every level replaces.
+     */
+    class LevelMismatch : public EnergyTerm
+    {
+    public:
+      explicit LevelMismatch(const std::unique_ptr<MismatchTerm<dim>> &term)
+        : term(term)
+      {}
+      std::string
+      name() const override
+      {
+        return term->name();
+      }
+      bool
+      gauss_newton() const override
+      {
+        return true;
+      }
+      double
+      value(const Vector &u) const override
+      {
+        return term->value(u);
+      }
+      void
+      add_gradient(const Vector &u,
+                   const double  factor,
+                   Vector       &g) const override
+      {
+        term->add_gradient(u, factor, g);
+      }
+      void
+      add_hessian_vmult(const Vector &u,
+                        const Vector &d,
+                        const double  factor,
+                        Vector       &y) const override
+      {
+        term->add_hessian_vmult(u, d, factor, y);
+      }
+      std::unique_ptr<EnergyTerm>
+      step_model(const Vector &u0) const override
+      {
+        // none before the first level's term exists (Algorithm 3.1 of the
+        // initial state, which does not evaluate the term)
+        return term ? term->step_model(u0) : nullptr;
+      }
+
+    private:
+      const std::unique_ptr<MismatchTerm<dim>> &term;
+    };
+
+    /**
+     * Growth factor of the step size after an easy step (step_accepted()):
+     * the inverse of the time loop's halving, so that a grown step that
+     * fails is retried at the size that worked.
+     */
+    static constexpr double step_growth = 2;
+
+    /**
+     * The smallest step size the control keeps for the next steps, as a
+     * multiple of Tau: 2^-6, six halvings (the time loop halves one step
+     * at most `Newton / Maximum step halvings` times, 4 by default), so
+     * that a few failed steps do not leave the level at a size that it
+     * needs many easy steps to regrow from.
+     */
+    static constexpr double min_tau_factor = 1. / 64;
+
+    /**
+     * The merit function of the step-size rule at @p state with
+     * @p energies: mu W + eta A + (3/4) j, geometric units.
+     */
+    double
+    merit(const BlockVector &state, const Energies &energies) const;
 
     /**
      * One level's TimeLoop from the last step @p step at @p time: run()
@@ -241,6 +361,15 @@ namespace PhaseField
      * labeling), whose gradient the explicit step of Algorithm 6.1 takes.
      */
     std::unique_ptr<MismatchTerm<dim>> mismatch_term;
+    /** mismatch_term as the data term of the monolithic schemes. */
+    const LevelMismatch level_mismatch{mismatch_term};
+    /**
+     * `Step size control`: the size the next step tries, as a multiple of
+     * the level's Tau (1 at the start of every level).
+     */
+    double tau_factor = 1;
+    /** The scheduled size of the step next_step_size() was last asked for. */
+    mutable double last_scheduled = 0;
     /** Target = image: the image. */
     Images::GrayImage target_image;
     /**

@@ -98,6 +98,18 @@ namespace PhaseField
     void
     create_scheme(const WillmoreParameters &parameters);
 
+    /**
+     * The outer energy of the schemes that create_scheme() makes: the
+     * setup's. A problem whose steps minimise a term of its own returns it
+     * with OuterEnergy::data_term set (shape from contour's monolithic
+     * coupling).
+     */
+    virtual OuterEnergy
+    scheme_outer_energy() const
+    {
+      return setup.outer_energy;
+    }
+
     /** The first lines of the log: what runs, with which solver. */
     virtual void
     print_header() const;

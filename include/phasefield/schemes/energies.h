@@ -22,6 +22,12 @@ namespace PhaseField
     double area = 0;
     /** Int (1-U)/2: the measure of the inside phase. */
     double inside_measure = 0;
+    /**
+     * The value of the data term (OuterEnergy::data_term; shape from
+     * contour's monolithic coupling: the mismatch j) in thesis units, 0
+     * without one.
+     */
+    double data_term = 0;
   };
 
   /**

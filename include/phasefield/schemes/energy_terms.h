@@ -59,6 +59,22 @@ namespace PhaseField
                       const Vector &d,
                       const double  factor,
                       Vector       &y) const = 0;
+
+    /**
+     * The model of the term that a time step from @p u0 minimises (a
+     * term without kinks: nullptr, the term itself). A term that is
+     * piecewise smooth with kinks (the mismatch: alpha[U] is piecewise
+     * linear in U) returns its Gauss-Newton model at @p u0, which equals
+     * the term wherever U has the kink pattern of @p u0 and is smooth
+     * everywhere, so that Newton's method converges on it; the time loop
+     * judges the step by the term itself (the energy law).
+     */
+    virtual std::unique_ptr<EnergyTerm>
+    step_model(const Vector &u0) const
+    {
+      (void)u0;
+      return nullptr;
+    }
   };
 
 
@@ -147,6 +163,65 @@ namespace PhaseField
     const Vector &forcing;
     const double  scale;
   };
+
+
+
+  /**
+   * A term @p scale times another term (referred to, which must outlive
+   * this one): OuterEnergy::data_term in the units of the nested step's
+   * residual.
+   */
+  class ScaledTerm : public EnergyTerm
+  {
+  public:
+    ScaledTerm(const EnergyTerm &term, const double scale);
+
+    /** @p scale times the term @p owned, which this one keeps. */
+    ScaledTerm(std::unique_ptr<EnergyTerm> owned, const double scale);
+
+    std::string
+    name() const override
+    {
+      return term.name();
+    }
+    bool
+    gauss_newton() const override
+    {
+      return term.gauss_newton();
+    }
+    double
+    value(const Vector &u) const override;
+    void
+    add_gradient(const Vector &u,
+                 const double  factor,
+                 Vector       &g) const override;
+    void
+    add_hessian_vmult(const Vector &u,
+                      const Vector &d,
+                      const double  factor,
+                      Vector       &y) const override;
+
+  private:
+    /** The term, if this one owns it. */
+    const std::unique_ptr<EnergyTerm> owned;
+    const EnergyTerm                 &term;
+    const double                      scale;
+  };
+
+
+
+  /**
+   * OuterEnergy::data_term of @p outer for a step of size @p tau from
+   * @p old_u in the units of the nested step's residual (the outer energy
+   * divided by 2 eps): tau / eps times the term's step model at @p old_u
+   * (EnergyTerm::step_model(); the mismatch's Gauss-Newton model), or
+   * the term itself if it has none; nullptr if @p outer has no data term.
+   */
+  std::unique_ptr<EnergyTerm>
+  make_data_term(const OuterEnergy &outer,
+                 const double       tau,
+                 const double       epsilon,
+                 const Vector      &old_u);
 
 
 

@@ -6,6 +6,8 @@
 
 namespace PhaseField
 {
+  class EnergyTerm;
+
   /**
    * The regularisation energy that a time step of the nested scheme
    * decreases, beyond the distance term eps ||u - u^k||^2 (thesis (3.17a),
@@ -46,13 +48,25 @@ namespace PhaseField
     const Vector *forcing = nullptr;
 
     /**
-     * Are the area term or fixed U values present? The UU block of the
-     * Jacobian is then not diagonal.
+     * A data term d[u] of the problem, in the units of mu W and eta A as
+     * the thesis prints them in (6.3) (shape from contour's monolithic
+     * coupling: the mismatch j[u] = gamma Int (alpha* - alpha[u])^2, thesis
+     * 6.5 and 7.3); nullptr: none. It enters the outer energy as
+     * 2 tau d[u], so that a step minimises
+     * eps ||u-u^k||^2 + 2 tau (e_reg[u] + d[u]) (make_data_term()). Its
+     * Hessian is applied matrix-free (EnergyTerm::add_hessian_vmult(), a
+     * Gauss-Newton product for the mismatch). Referred to, not copied.
+     */
+    const EnergyTerm *data_term = nullptr;
+
+    /**
+     * Are the area term, a data term or fixed U values present? The UU
+     * block of the Jacobian is then not diagonal.
      */
     bool
     has_restoration_terms() const
     {
-      return area_weight != 0 || fixed_u != nullptr;
+      return area_weight != 0 || fixed_u != nullptr || data_term != nullptr;
     }
   };
 } // namespace PhaseField

@@ -81,6 +81,45 @@ namespace PhaseField
       }
 
       /**
+       * The size the next step tries first, for the scheduled size
+       * @p scheduled (ramp-up, Tau). The default takes the schedule; a
+       * client with a step-size control of its own (shape from contour)
+       * returns another, at most Settings::largest_step_factor times
+       * @p scheduled.
+       */
+      virtual double
+      next_step_size(const double scheduled) const
+      {
+        return scheduled;
+      }
+
+      /**
+       * After step @p step was accepted: it went from @p old_state (with
+       * @p old_energies) to @p state (with @p energies) with size @p tau,
+       * tried first with @p tried_tau, as @p report says. The data of a
+       * step-size control (next_step_size()).
+       */
+      virtual void
+      step_accepted(const unsigned int step,
+                    const BlockVector &old_state,
+                    const Energies    &old_energies,
+                    const BlockVector &state,
+                    const Energies    &energies,
+                    const StepReport  &report,
+                    const double       tau,
+                    const double       tried_tau)
+      {
+        (void)step;
+        (void)old_state;
+        (void)old_energies;
+        (void)state;
+        (void)energies;
+        (void)report;
+        (void)tau;
+        (void)tried_tau;
+      }
+
+      /**
        * After the statistics row of step @p step with the @p energies of
        * @p state: should the run end here, before its last step? (The
        * automatic level transition of shape from contour.)
@@ -204,6 +243,12 @@ namespace PhaseField
        * stage.
        */
       bool refuse_empty_resume = true;
+      /**
+       * The largest factor by which Client::next_step_size() may exceed the
+       * scheduled sizes: the time a checkpoint may have reached by its
+       * step (check_time()).
+       */
+      double largest_step_factor = 1;
 
       /**
        * The settings of the Willmore-flow parameters of the program

@@ -350,6 +350,10 @@ namespace PhaseField
   {
     if (coeff.outer.fixed_u == nullptr)
       return solve_area_system(z, r, dz, solver, shift);
+    AssertThrow(coeff.outer.data_term == nullptr,
+                ExcMessage("The assembled 3-field Jacobian of fixed U "
+                           "values has no data term (OuterEnergy::"
+                           "data_term)."));
     AssertThrow(solver.type() == LinearSolverType::direct,
                 ExcMessage("The 3-field Newton system of edge restoration "
                            "needs <Linear solver / Type> = direct (or auto "

@@ -109,6 +109,9 @@ namespace PhaseField
       phase_field_energies(ops, state.block(Field::U), settings.epsilon);
     e.willmore = Constants::geometric_unit * 0.5 * settings.epsilon *
                  ops.mass_product(curvature_field, curvature_field);
+    if (settings.outer_energy.data_term != nullptr)
+      e.data_term =
+        settings.outer_energy.data_term->value(state.block(Field::U));
     return e;
   }
 
@@ -129,7 +132,10 @@ namespace PhaseField
   double
   NestedModel<dim>::energy_law_energy(const Energies &energies) const
   {
-    return weighted_regularisation(settings.outer_energy, energies);
+    // the data term enters the step's energy as mu W and eta A do in
+    // thesis units, so in geometric units with the factor 3/4
+    return weighted_regularisation(settings.outer_energy, energies) +
+           Constants::geometric_unit * energies.data_term;
   }
 
 

@@ -22,6 +22,10 @@ namespace PhaseField
                                     ops,
                                     coefficients.tau,
                                     coefficients.epsilon))
+    , data_term(make_data_term(coefficients.outer,
+                               coefficients.tau,
+                               coefficients.epsilon,
+                               old_u))
   {}
 
 
@@ -34,6 +38,8 @@ namespace PhaseField
   {
     for (const auto &term : terms)
       term->add_gradient(u, factor, g);
+    if (data_term)
+      data_term->add_gradient(u, factor, g);
   }
 
 
@@ -47,6 +53,8 @@ namespace PhaseField
   {
     for (const auto &term : terms)
       term->add_hessian_vmult(u, d, factor, y);
+    if (data_term)
+      data_term->add_hessian_vmult(u, d, factor, y);
   }
 
 
@@ -202,6 +210,18 @@ namespace PhaseField
           m[i] * (-a * xu + (a + weights.e(v[i], p[i])) * xv);
         y.block(Field::P).begin()[i] += -m[i] * xu;
       }
+    // the data term's Hessian (Gauss-Newton product) matrix-free
+    if (data_term)
+      {
+        Vector hd(y.block(Field::U));
+        hd = 0;
+        data_term->add_hessian_vmult(z.block(Field::U),
+                                     x.block(Field::U),
+                                     1.,
+                                     hd);
+        zero_fixed_u(hd);
+        y.block(Field::U) += hd;
+      }
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(y.block(b));
   }
@@ -286,6 +306,9 @@ namespace PhaseField
     // 2 tau eta a_eps[U] / (2 eps), -2 tau F.U / (2 eps)
     for (const auto &term : terms)
       energy += term->value(u);
+    // 2 tau d[U] / (2 eps)
+    if (data_term)
+      energy += data_term->value(u);
     return energy;
   }
 

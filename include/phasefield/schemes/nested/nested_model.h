@@ -79,7 +79,9 @@ namespace PhaseField
 
     /**
      * mu W + eta A of a state with the @p energies (the weights of the
-     * outer energy, combined by weighted_regularisation()).
+     * outer energy, combined by weighted_regularisation()), plus (3/4) d
+     * for a data term d (Energies::data_term): the energy that the step
+     * decreases, in geometric units.
      */
     double
     energy_law_energy(const Energies &energies) const;

@@ -121,6 +121,10 @@ namespace PhaseField
    *       [ -M                                     K(V)     0    ]
    *
    * with E = c M[Psi'''(V) P]; all nodal weights come from NestedWeights.
+   * With a data term d (OuterEnergy::data_term), R_U has (tau/eps) d'(U)
+   * and J_UU (tau/eps) d''(U) besides (for the mismatch j the Gauss-Newton
+   * product J^T 2 gamma W J, which is its Hessian away from the kinks of
+   * the labeling: alpha[U] is piecewise linear in U).
    * With U held fixed at the DoFs of OuterEnergy::fixed_u (thesis
    * Definition 5.1) the U-row of R is zero there and the U-row and
    * U-column of J are those of the identity.
@@ -222,7 +226,8 @@ namespace PhaseField
     /**
      * @p g += @p factor times the gradient of the outer energy's terms
      * beyond the distance and Willmore terms (make_outer_energy_terms():
-     * area, forcing) at @p u: part of R_U.
+     * area, forcing; and the data term, make_data_term()) at @p u: part of
+     * R_U.
      */
     void
     add_terms_gradient(const Vector &u, const double factor, Vector &g) const;
@@ -231,7 +236,9 @@ namespace PhaseField
      * @p y += @p factor times the Hessian of the same terms at @p u applied
      * to @p d (matrix-free). apply_jacobian() and the assembled 3-field
      * Jacobian (NestedLinearSystems) hold the area term's Hessian in the
-     * assembled form M[uu] + tau eta L (NestedWeights::uu()).
+     * assembled form M[uu] + tau eta L (NestedWeights::uu());
+     * apply_jacobian() adds the data term's product (a Gauss-Newton product
+     * for the mismatch) matrix-free.
      */
     void
     add_terms_hessian_vmult(const Vector &u,
@@ -325,6 +332,12 @@ namespace PhaseField
     const Vector               &old_u;
     /** The outer energy's terms (make_outer_energy_terms()). */
     const std::vector<std::unique_ptr<EnergyTerm>> terms;
+    /**
+     * OuterEnergy::data_term scaled to the residual's units
+     * (make_data_term()), or nullptr; its Hessian is applied matrix-free in
+     * apply_jacobian().
+     */
+    const std::unique_ptr<EnergyTerm> data_term;
   };
 } // namespace PhaseField
 
