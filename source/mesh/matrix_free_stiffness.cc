@@ -5,6 +5,7 @@
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <map>
 #include <phasefield/mesh/matrix_free_stiffness.h>
+#include <phasefield/mesh/shifted_product.h>
 
 namespace PhaseField
 {
@@ -273,12 +274,7 @@ namespace PhaseField
   MatrixFreeShiftedStiffness<dim>::vmult(Vector &dst, const Vector &src) const
   {
     stiffness->vmult(dst, src);
-    const unsigned int n = dst.locally_owned_size();
-    const double      *d = diagonal.begin();
-    const double      *x = src.begin();
-    double            *y = dst.begin();
-    for (unsigned int i = 0; i < n; ++i)
-      y[i] = factor * y[i] + d[i] * x[i];
+    scale_and_add_diagonal(factor, diagonal, src, dst);
   }
 
 

@@ -6,6 +6,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <phasefield/mesh/algebraic_multigrid.h>
+#include <phasefield/mesh/shifted_product.h>
 #include <phasefield/mesh/stiffness_plus_diagonal.h>
 #include <vector>
 
@@ -30,12 +31,7 @@ namespace PhaseField
   {
     Assert(stiffness != nullptr, dealii::ExcNotInitialized());
     stiffness->vmult(dst, src);
-    const unsigned int n = dst.locally_owned_size();
-    const double      *d = diagonal.begin();
-    const double      *x = src.begin();
-    double            *y = dst.begin();
-    for (unsigned int i = 0; i < n; ++i)
-      y[i] = stiffness_factor * y[i] + d[i] * x[i];
+    scale_and_add_diagonal(stiffness_factor, diagonal, src, dst);
   }
 
 
