@@ -206,8 +206,7 @@ namespace PhaseField
   std::size_t
   MultigridHierarchy<dim>::memory_consumption() const
   {
-    std::size_t bytes =
-      transfer.memory_consumption() + mg_constrained_dofs.memory_consumption();
+    std::size_t bytes = transfer.memory_consumption();
     for (unsigned int level = levels.min_level(); level <= levels.max_level();
          ++level)
       bytes += levels[level]->memory_consumption() +
