@@ -74,7 +74,7 @@ namespace PhaseField
   {
     if (linear_solver->type() == LinearSolverType::direct)
       return "direct (MUMPS)";
-    return discretization.get_operators().get_backend() ==
+    return discretization.get_settings().backend ==
                OperatorBackend::matrix_free ?
              "matrix-free (CG + geometric multigrid)" :
              "iterative (CG + AMG)";
