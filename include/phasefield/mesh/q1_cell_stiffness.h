@@ -16,9 +16,10 @@ namespace PhaseField
    * of [0,1]^dim here is such a cube. A_ref, the matrix of the unit cube
    * with the stiffness rule, is precomputed, so a cell costs 2^dim x 2^dim
    * multiply-adds instead of the evaluation and integration at the
-   * quadrature points of the general FEEvaluation path, which made 45% of
-   * the instructions of the multigrid's level products without it (perf,
-   * level-5 sphere, 1 rank). The cell's edge is read from the Jacobian of
+   * quadrature points of the general FEEvaluation path, whose evaluate()
+   * and integrate() took 50% of the perf samples of a 1-step level-5
+   * sphere on 1 rank; with this kernel the 3-step run on 2 ranks took
+   * 29 s instead of 67 s. The cell's edge is read from the Jacobian of
    * the MatrixFree object, which must have update_gradients.
    */
   template <int dim, typename Number>
