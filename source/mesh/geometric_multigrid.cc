@@ -2,11 +2,12 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping_cartesian.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/tools.h>
 #include <deal.II/multigrid/mg_tools.h>
+#include <phasefield/core/constants.h>
 #include <phasefield/mesh/geometric_multigrid.h>
 
 namespace PhaseField
@@ -15,10 +16,6 @@ namespace PhaseField
 
   namespace
   {
-    /** Q1 with 2 points per direction (Gauss or Gauss-Lobatto). */
-    template <int dim, typename Number>
-    using Q1Evaluation = FEEvaluation<dim, 1, 2, 1, Number>;
-
     /**
      * Ratio of the largest to the smallest eigenvalue that a smoother
      * damps (deal.II's step-37: the upper part of the spectrum, which the
@@ -56,15 +53,13 @@ namespace PhaseField
 
 
 
-  std::vector<Quadrature<1>>
-  matrix_free_quadratures(const StiffnessQuadrature stiffness_quadrature)
+  Quadrature<1>
+  stiffness_rule(const StiffnessQuadrature stiffness_quadrature)
   {
     constexpr unsigned int n_points = 2;
-    const Quadrature<1>    stiffness =
-      stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
-           Quadrature<1>(QGaussLobatto<1>(n_points)) :
-           Quadrature<1>(QGauss<1>(n_points));
-    return {stiffness, QGaussLobatto<1>(n_points)};
+    return stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
+             Quadrature<1>(QGaussLobatto<1>(n_points)) :
+             Quadrature<1>(QGauss<1>(n_points));
   }
 
 
@@ -87,15 +82,54 @@ namespace PhaseField
 
 
 
+  namespace
+  {
+    /** Whether the vertices of @p cell are those of an axis-parallel cube. */
+    template <typename CellIterator>
+    bool
+    is_axis_parallel_cube(const CellIterator &cell)
+    {
+      constexpr int dim       = CellIterator::AccessorType::dimension;
+      const auto   &origin    = cell->vertex(0);
+      const double  h         = cell->vertex(1)[0] - origin[0];
+      const double  tolerance = Constants::roundoff * h;
+      for (const unsigned int v : cell->vertex_indices())
+        for (unsigned int d = 0; d < dim; ++d)
+          if (std::abs(cell->vertex(v)[d] - origin[d] - ((v >> d) & 1) * h) >
+              tolerance)
+            return false;
+      return true;
+    }
+  } // namespace
+
+
+
   template <int dim, typename Number>
   void
-  assert_cartesian_cells(const MatrixFree<dim, Number> &data)
+  reinit_q1_matrix_free(MatrixFree<dim, Number>         &data,
+                        const DoFHandler<dim>           &dof_handler,
+                        const AffineConstraints<double> &constraints,
+                        const unsigned int               mg_level)
   {
+    typename MatrixFree<dim, Number>::AdditionalData settings;
+    settings.tasks_parallel_scheme =
+      MatrixFree<dim, Number>::AdditionalData::none;
+    settings.mapping_update_flags = update_gradients;
+    settings.mg_level             = mg_level;
+    data.reinit(MappingCartesian<dim>(),
+                dof_handler,
+                constraints,
+                QGauss<1>(1),
+                settings);
     bool cartesian = true;
-    for (unsigned int cell = 0; cell < data.n_cell_batches(); ++cell)
-      cartesian = cartesian && data.get_mapping_info().get_cell_type(cell) ==
-                                 internal::MatrixFreeFunctions::cartesian;
-    AssertThrow(cartesian,
+    for (unsigned int batch = 0; batch < data.n_cell_batches(); ++batch)
+      for (unsigned int lane = 0;
+           lane < data.n_active_entries_per_cell_batch(batch);
+           ++lane)
+        cartesian = cartesian &&
+                    is_axis_parallel_cube(data.get_cell_iterator(batch, lane));
+    AssertThrow(Utilities::MPI::min(cartesian ? 1 : 0,
+                                    dof_handler.get_communicator()) == 1,
                 ExcMessage("The matrix-free stiffness operator needs a mesh "
                            "of axis-parallel cubes."));
   }
@@ -175,7 +209,7 @@ namespace PhaseField
     const StiffnessQuadrature stiffness_quadrature,
     const bool                dirichlet)
     : dof_handler(dof_handler)
-    , cell_stiffness(matrix_free_quadratures(stiffness_quadrature)[0])
+    , cell_stiffness(stiffness_rule(stiffness_quadrature))
   {
     const unsigned int n_levels =
       dof_handler.get_triangulation().n_global_levels();
@@ -193,8 +227,8 @@ namespace PhaseField
     stiffness_diagonal.resize(0, n_levels - 1);
     for (unsigned int level = 0; level < n_levels; ++level)
       {
-        levels[level] = make_level(level, stiffness_quadrature);
-        compute_level_vectors(level);
+        levels[level] = make_level(level);
+        compute_level_vectors(level, stiffness_rule(stiffness_quadrature));
       }
     transfer.initialize_constraints(mg_constrained_dofs);
     transfer.build(dof_handler);
@@ -219,9 +253,7 @@ namespace PhaseField
 
   template <int dim>
   std::shared_ptr<const MatrixFree<dim, float>>
-  MultigridHierarchy<dim>::make_level(
-    const unsigned int        level,
-    const StiffnessQuadrature stiffness_quadrature) const
+  MultigridHierarchy<dim>::make_level(const unsigned int level) const
   {
     IndexSet relevant;
     DoFTools::extract_locally_relevant_level_dofs(dof_handler, level, relevant);
@@ -231,20 +263,8 @@ namespace PhaseField
       level_constraints.add_lines(
         mg_constrained_dofs.get_boundary_indices(level));
     level_constraints.close();
-
-    typename MatrixFree<dim, float>::AdditionalData data;
-    data.tasks_parallel_scheme = MatrixFree<dim, float>::AdditionalData::none;
-    data.mapping_update_flags =
-      update_gradients | update_values | update_JxW_values;
-    data.mg_level   = level;
     auto level_data = std::make_shared<MatrixFree<dim, float>>();
-    level_data->reinit(MappingQ1<dim>(),
-                       std::vector<const DoFHandler<dim> *>{&dof_handler},
-                       std::vector<const AffineConstraints<double> *>{
-                         &level_constraints},
-                       matrix_free_quadratures(stiffness_quadrature),
-                       data);
-    assert_cartesian_cells(*level_data);
+    reinit_q1_matrix_free(*level_data, dof_handler, level_constraints, level);
     return level_data;
   }
 
@@ -252,26 +272,15 @@ namespace PhaseField
 
   template <int dim>
   void
-  MultigridHierarchy<dim>::compute_level_vectors(const unsigned int level)
+  MultigridHierarchy<dim>::compute_level_vectors(
+    const unsigned int   level,
+    const Quadrature<1> &stiffness_rule)
   {
     const MatrixFree<dim, float> &data = *levels[level];
     data.initialize_dof_vector(lumped_mass[level]);
-    Q1Evaluation<dim, float> mass(data, 0, lumped_mass_quadrature);
-    for (unsigned int cell = 0; cell < data.n_cell_batches(); ++cell)
-      {
-        mass.reinit(cell);
-        for (unsigned int q = 0; q < mass.n_q_points; ++q)
-          mass.submit_value(make_vectorized_array<float>(1.f), q);
-        mass.integrate(EvaluationFlags::values);
-        mass.distribute_local_to_global(lumped_mass[level]);
-      }
-    lumped_mass[level].compress(VectorOperation::add);
-
     data.initialize_dof_vector(stiffness_diagonal[level]);
-    const Quadrature<dim> quadrature(
-      data.get_quadrature().get_tensor_basis()[0]);
     FEValues<dim>                        fe_values(dof_handler.get_fe(),
-                            quadrature,
+                            Quadrature<dim>(stiffness_rule),
                             update_gradients | update_JxW_values);
     FullMatrix<double>                   cell_matrix;
     std::vector<types::global_dof_index> indices(
@@ -281,9 +290,15 @@ namespace PhaseField
         {
           cell->get_mg_dof_indices(indices);
           cell_stiffness_matrix(fe_values, cell, cell_matrix);
+          // the mass lumped at the vertices: Q1 with Gauss-Lobatto points
+          const double vertex_mass = cell->measure() / indices.size();
           for (unsigned int i = 0; i < indices.size(); ++i)
-            stiffness_diagonal[level](indices[i]) += cell_matrix(i, i);
+            {
+              stiffness_diagonal[level](indices[i]) += cell_matrix(i, i);
+              lumped_mass[level](indices[i]) += vertex_mass;
+            }
         }
+    lumped_mass[level].compress(VectorOperation::add);
     stiffness_diagonal[level].compress(VectorOperation::add);
   }
 
@@ -418,9 +433,15 @@ namespace PhaseField
                         const DoFHandler<3>::active_cell_iterator &,
                         FullMatrix<double> &);
   template void
-  assert_cartesian_cells(const MatrixFree<2, double> &);
+  reinit_q1_matrix_free(MatrixFree<2, double> &,
+                        const DoFHandler<2> &,
+                        const AffineConstraints<double> &,
+                        unsigned int);
   template void
-  assert_cartesian_cells(const MatrixFree<3, double> &);
+  reinit_q1_matrix_free(MatrixFree<3, double> &,
+                        const DoFHandler<3> &,
+                        const AffineConstraints<double> &,
+                        unsigned int);
   template class LevelStiffness<2>;
   template class LevelStiffness<3>;
   template class MultigridHierarchy<2>;

@@ -1,7 +1,6 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <map>
 #include <phasefield/mesh/matrix_free_stiffness.h>
@@ -10,14 +9,6 @@
 namespace PhaseField
 {
   using namespace dealii;
-
-  namespace
-  {
-    template <int dim>
-    using Q1Evaluation = FEEvaluation<dim, 1, 2, 1, double>;
-  } // namespace
-
-
 
   template <int dim>
   void
@@ -32,17 +23,9 @@ namespace PhaseField
     lumped_mass = &mass;
     settings    = s;
 
-    typename MatrixFree<dim, double>::AdditionalData data;
-    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
-    data.mapping_update_flags  = update_gradients | update_JxW_values;
-    matrix_free.reinit(MappingQ1<dim>(),
-                       std::vector<const DoFHandler<dim> *>{&dofs},
-                       std::vector<const AffineConstraints<double> *>{&c},
-                       matrix_free_quadratures(settings.stiffness_quadrature),
-                       data);
-    assert_cartesian_cells(matrix_free);
+    reinit_q1_matrix_free(matrix_free, dofs, c);
     cell_stiffness = std::make_unique<const Q1CellStiffness<dim, double>>(
-      matrix_free_quadratures(settings.stiffness_quadrature)[0]);
+      stiffness_rule(settings.stiffness_quadrature));
     matrix_free.initialize_dof_vector(src_fine);
     matrix_free.initialize_dof_vector(dst_fine);
     compute_constrained_diagonal();
@@ -90,7 +73,7 @@ namespace PhaseField
   MatrixFreeStiffness<dim>::assembled_diagonal() const
   {
     const Quadrature<dim> quadrature(
-      matrix_free_quadratures(settings.stiffness_quadrature)[0]);
+      stiffness_rule(settings.stiffness_quadrature));
     FEValues<dim>      fe_values(dof_handler->get_fe(),
                             quadrature,
                             update_gradients | update_JxW_values);
@@ -158,7 +141,7 @@ namespace PhaseField
     const FineVector                            &src,
     const std::pair<unsigned int, unsigned int> &cell_range) const
   {
-    Q1Evaluation<dim> phi(data);
+    Q1Evaluation<dim, double> phi(data);
     for (unsigned int cell = cell_range.first; cell < cell_range.second; ++cell)
       {
         phi.reinit(cell);

@@ -33,18 +33,29 @@ namespace PhaseField
   /** The vectors of the matrix-free operators on the active mesh. */
   using FineVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
-  /**
-   * Quadrature index of the lumped mass (Gauss-Lobatto on the vertices) in
-   * the matrix-free objects; index 0 is the stiffness rule.
-   */
-  constexpr unsigned int lumped_mass_quadrature = 1;
+  /** The 1D stiffness rule: two points, Gauss or Gauss-Lobatto. */
+  dealii::Quadrature<1>
+  stiffness_rule(const StiffnessQuadrature stiffness_quadrature);
 
   /**
-   * The 1D rules of the matrix-free objects: index 0 the stiffness rule
-   * @p stiffness_quadrature, index lumped_mass_quadrature the vertices.
+   * Set up @p data for the Q1CellStiffness kernel on the active cells of
+   * @p dof_handler with @p constraints, or on the cells of level
+   * @p mg_level: the DoF indices and each cell's Jacobian, from which the
+   * kernel reads the cell's edge, and nothing else. The kernel evaluates
+   * nothing at quadrature points, so one point per cell and MappingCartesian
+   * suffice: with MappingQ1 and two 2-point rules, the setup's transient heap
+   * on the level-7 sphere (2 ranks, 983k cells) was 1010 MiB instead of 650
+   * (mallinfo2 before and after; most of the rest is deal.II's hanging-node
+   * setup in 3D, which 9.4 does not let one switch off). Throws unless every
+   * cell is an axis-parallel cube.
    */
-  std::vector<dealii::Quadrature<1>>
-  matrix_free_quadratures(const StiffnessQuadrature stiffness_quadrature);
+  template <int dim, typename Number>
+  void
+  reinit_q1_matrix_free(
+    dealii::MatrixFree<dim, Number>         &data,
+    const dealii::DoFHandler<dim>           &dof_handler,
+    const dealii::AffineConstraints<double> &constraints,
+    const unsigned int mg_level = dealii::numbers::invalid_unsigned_int);
 
   /**
    * @p cell_matrix = the stiffness matrix of @p cell (an active or a level
@@ -141,12 +152,15 @@ namespace PhaseField
   private:
     /** The matrix-free object of @p level. */
     std::shared_ptr<const dealii::MatrixFree<dim, float>>
-    make_level(const unsigned int        level,
-               const StiffnessQuadrature stiffness_quadrature) const;
+    make_level(const unsigned int level) const;
 
-    /** lumped_mass and stiffness_diagonal on @p level. */
+    /**
+     * lumped_mass and stiffness_diagonal on @p level, the latter with the
+     * 1D rule @p stiffness_rule.
+     */
     void
-    compute_level_vectors(const unsigned int level);
+    compute_level_vectors(const unsigned int           level,
+                          const dealii::Quadrature<1> &stiffness_rule);
   };
 
 
@@ -231,14 +245,6 @@ namespace PhaseField
   };
 
 
-
-  /**
-   * Throw unless every cell of @p data is an axis-parallel cube (what
-   * Q1CellStiffness needs).
-   */
-  template <int dim, typename Number>
-  void
-  assert_cartesian_cells(const dealii::MatrixFree<dim, Number> &data);
 
   /** Copy the locally owned values of @p src into @p dst (same layout). */
   void

@@ -10,6 +10,13 @@
 namespace PhaseField
 {
   /**
+   * The evaluator of the Q1 kernels: Q1 with one quadrature point (the
+   * kernels read the DoF values and the cell's Jacobian only).
+   */
+  template <int dim, typename Number>
+  using Q1Evaluation = dealii::FEEvaluation<dim, 1, 1, 1, Number>;
+
+  /**
    * The Q1 stiffness matrix of an axis-parallel cube cell of edge h,
    * h^(dim-2) A_ref, applied to the DoF values of an FEEvaluation (read with
    * the constraints resolved, then distributed): every cell of the meshes
