@@ -81,20 +81,24 @@ namespace PhaseField
       VA        scale = factor;
       for (int d = 2; d < dim; ++d)
         scale *= h;
-      std::array<VA, n> result;
-      for (unsigned int i = 0; i < n; ++i)
+      // A_ref is symmetric: accumulate its columns, a loop over the n
+      // values of a column that the compiler vectorises
+      for (unsigned int lane = 0; lane < VA::size(); ++lane)
         {
-          VA sum = reference[i][0] * v[0];
-          for (unsigned int j = 1; j < n; ++j)
-            sum += reference[i][j] * v[j];
-          result[i] = sum;
+          Number result[n] = {};
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const Number v_j = scale[lane] * v[j][lane];
+              for (unsigned int i = 0; i < n; ++i)
+                result[i] += reference[j][i] * v_j;
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            v[i][lane] = result[i];
         }
-      for (unsigned int i = 0; i < n; ++i)
-        v[i] = scale * result[i];
     }
 
   private:
-    Number reference[n][n];
+    alignas(4 * sizeof(Number)) Number reference[n][n];
   };
 } // namespace PhaseField
 
