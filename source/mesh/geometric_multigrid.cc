@@ -137,15 +137,61 @@ namespace PhaseField
 
 
   template <int dim>
+  Q1LevelCells<dim>::Q1LevelCells(const MatrixFree<dim, float> &data,
+                                  const MGConstrainedDoFs &mg_constrained_dofs,
+                                  const unsigned int       level)
+  {
+    constexpr unsigned int n     = Q1CellStiffness<dim, float>::n;
+    constexpr unsigned int width = VectorizedArray<float>::size();
+    LevelVector            vector;
+    data.initialize_dof_vector(vector);
+    const auto &partitioner = *vector.get_partitioner();
+    const bool  boundary    = mg_constrained_dofs.have_boundary_indices();
+    dofs.assign(data.n_cell_batches() * width * n,
+                numbers::invalid_unsigned_int);
+    scale.assign(data.n_cell_batches() * width, 0.f);
+    std::vector<types::global_dof_index> indices(n);
+    for (unsigned int batch = 0; batch < data.n_cell_batches(); ++batch)
+      for (unsigned int lane = 0;
+           lane < data.n_active_entries_per_cell_batch(batch);
+           ++lane)
+        {
+          const auto         cell  = data.get_cell_iterator(batch, lane);
+          const unsigned int index = batch * width + lane;
+          cell->get_mg_dof_indices(indices);
+          for (unsigned int i = 0; i < n; ++i)
+            if (!boundary ||
+                !mg_constrained_dofs.is_boundary_index(level, indices[i]))
+              dofs[index * n + i] = partitioner.global_to_local(indices[i]);
+          const double h = cell->vertex(1)[0] - cell->vertex(0)[0];
+          scale[index]   = std::pow(h, dim - 2);
+        }
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  Q1LevelCells<dim>::memory_consumption() const
+  {
+    return dofs.capacity() * sizeof(unsigned int) +
+           scale.capacity() * sizeof(float);
+  }
+
+
+
+  template <int dim>
   void
   LevelStiffness<dim>::set_coefficients(
     const double                       f,
-    const Q1CellStiffness<dim, float> &cells,
+    const Q1CellStiffness<dim, float> &kernel,
+    const Q1LevelCells<dim>           &level_cells,
     const LevelVector                 &l_diagonal,
     const LevelVector                 &d)
   {
     factor             = f;
-    cell_stiffness     = &cells;
+    cell_stiffness     = &kernel;
+    cells              = &level_cells;
     stiffness_diagonal = &l_diagonal;
     diagonal           = &d;
     compute_diagonal();
@@ -191,14 +237,25 @@ namespace PhaseField
     const LevelVector                           &src,
     const std::pair<unsigned int, unsigned int> &cell_range) const
   {
-    Q1Evaluation<dim, float> phi(data);
-    for (unsigned int cell = cell_range.first; cell < cell_range.second; ++cell)
-      {
-        phi.reinit(cell);
-        phi.read_dof_values(src);
-        cell_stiffness->apply(phi, factor);
-        phi.distribute_local_to_global(dst);
-      }
+    constexpr unsigned int n     = Q1CellStiffness<dim, float>::n;
+    constexpr unsigned int width = VectorizedArray<float>::size();
+    constexpr unsigned int none  = numbers::invalid_unsigned_int;
+    for (unsigned int batch = cell_range.first; batch < cell_range.second;
+         ++batch)
+      for (unsigned int lane = 0;
+           lane < data.n_active_entries_per_cell_batch(batch);
+           ++lane)
+        {
+          const unsigned int  cell = batch * width + lane;
+          const unsigned int *dofs = cells->dofs.data() + cell * n;
+          float               values[n];
+          for (unsigned int i = 0; i < n; ++i)
+            values[i] = dofs[i] == none ? 0.f : src.local_element(dofs[i]);
+          cell_stiffness->apply(values, factor * cells->scale[cell]);
+          for (unsigned int i = 0; i < n; ++i)
+            if (dofs[i] != none)
+              dst.local_element(dofs[i]) += values[i];
+        }
   }
 
 
@@ -223,11 +280,14 @@ namespace PhaseField
                                                            boundary);
       }
     levels.resize(0, n_levels - 1);
+    cells.resize(0, n_levels - 1);
     lumped_mass.resize(0, n_levels - 1);
     stiffness_diagonal.resize(0, n_levels - 1);
     for (unsigned int level = 0; level < n_levels; ++level)
       {
         levels[level] = make_level(level);
+        cells[level] =
+          Q1LevelCells<dim>(*levels[level], mg_constrained_dofs, level);
         compute_level_vectors(level, stiffness_rule(stiffness_quadrature));
       }
     transfer.initialize_constraints(mg_constrained_dofs);
@@ -244,6 +304,7 @@ namespace PhaseField
     for (unsigned int level = levels.min_level(); level <= levels.max_level();
          ++level)
       bytes += levels[level]->memory_consumption() +
+               cells[level].memory_consumption() +
                lumped_mass[level].memory_consumption() +
                stiffness_diagonal[level].memory_consumption();
     return bytes;
@@ -363,6 +424,7 @@ namespace PhaseField
                                     level);
         operators[level].set_coefficients(factor,
                                           hierarchy.cell_stiffness,
+                                          hierarchy.cells[level],
                                           hierarchy.stiffness_diagonal[level],
                                           level_diagonal[level]);
         interface_operators[level].initialize(operators[level]);
@@ -442,6 +504,8 @@ namespace PhaseField
                         const DoFHandler<3> &,
                         const AffineConstraints<double> &,
                         unsigned int);
+  template struct Q1LevelCells<2>;
+  template struct Q1LevelCells<3>;
   template class LevelStiffness<2>;
   template class LevelStiffness<3>;
   template class MultigridHierarchy<2>;

@@ -68,6 +68,40 @@ namespace PhaseField
                         dealii::FullMatrix<double> &cell_matrix);
 
   /**
+   * The cells of one multigrid level as the Q1 kernel reads them, in the
+   * order of the cells of the level's matrix-free object (batches, then
+   * lanes): per cell its 2^dim DoFs as local indices of the level's
+   * vectors, numbers::invalid_unsigned_int for a DoF on the Dirichlet
+   * boundary (read as zero and not written, as FEEvaluation does with the
+   * level constraints), and its factor h^(dim-2). LevelStiffness gathers
+   * and scatters through these 36 bytes per cell (3D) instead of
+   * FEEvaluation, whose generic gather and scatter took most of the time of
+   * the level products (doc/scaling.md, "The matrix-free backend").
+   */
+  template <int dim>
+  struct Q1LevelCells
+  {
+    Q1LevelCells() = default;
+
+    /**
+     * The cells of @p data, a matrix-free object of level @p level, with the
+     * boundary DoFs of @p mg_constrained_dofs.
+     */
+    Q1LevelCells(const dealii::MatrixFree<dim, float> &data,
+                 const dealii::MGConstrainedDoFs      &mg_constrained_dofs,
+                 const unsigned int                    level);
+
+    /** Bytes of this rank. */
+    std::size_t
+    memory_consumption() const;
+
+    std::vector<unsigned int> dofs;
+    std::vector<float>        scale;
+  };
+
+
+
+  /**
    * f L_l + D_l on level l of the mesh hierarchy (local smoothing): the
    * stiffness operator of the level's cells times a number f plus a
    * diagonal D_l, the level's lumped mass times the nodal coefficient
@@ -81,13 +115,14 @@ namespace PhaseField
   public:
     /**
      * The operator @p factor L_l + diag(@p diagonal), with the cell matrices
-     * of @p cell_stiffness, whose diagonal without the shift is
-     * @p stiffness_diagonal (diag L_l); all three must outlive this object.
-     * Computes the inverse diagonal that the smoother uses.
+     * of @p cell_stiffness on the cells @p cells, whose diagonal without the
+     * shift is @p stiffness_diagonal (diag L_l); all four must outlive this
+     * object. Computes the inverse diagonal that the smoother uses.
      */
     void
     set_coefficients(const double                       factor,
                      const Q1CellStiffness<dim, float> &cell_stiffness,
+                     const Q1LevelCells<dim>           &cells,
                      const LevelVector                 &stiffness_diagonal,
                      const LevelVector                 &diagonal);
 
@@ -107,6 +142,7 @@ namespace PhaseField
 
     float                              factor             = 0;
     const Q1CellStiffness<dim, float> *cell_stiffness     = nullptr;
+    const Q1LevelCells<dim>           *cells              = nullptr;
     const LevelVector                 *stiffness_diagonal = nullptr;
     const LevelVector                 *diagonal           = nullptr;
   };
@@ -143,9 +179,10 @@ namespace PhaseField
     dealii::MGConstrainedDoFs                mg_constrained_dofs;
     dealii::MGTransferMatrixFree<dim, float> transfer;
     dealii::MGLevelObject<std::shared_ptr<const dealii::MatrixFree<dim, float>>>
-                                       levels;
-    dealii::MGLevelObject<LevelVector> lumped_mass;
-    dealii::MGLevelObject<LevelVector> stiffness_diagonal;
+                                             levels;
+    dealii::MGLevelObject<Q1LevelCells<dim>> cells;
+    dealii::MGLevelObject<LevelVector>       lumped_mass;
+    dealii::MGLevelObject<LevelVector>       stiffness_diagonal;
     /** The cell matrix of every level (the stiffness rule). */
     const Q1CellStiffness<dim, float> cell_stiffness;
 

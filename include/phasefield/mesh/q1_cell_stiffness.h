@@ -81,20 +81,32 @@ namespace PhaseField
       VA        scale = factor;
       for (int d = 2; d < dim; ++d)
         scale *= h;
-      // A_ref is symmetric: accumulate its columns, a loop over the n
-      // values of a column that the compiler vectorises
       for (unsigned int lane = 0; lane < VA::size(); ++lane)
         {
-          Number result[n] = {};
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const Number v_j = scale[lane] * v[j][lane];
-              for (unsigned int i = 0; i < n; ++i)
-                result[i] += reference[j][i] * v_j;
-            }
+          Number values[n];
           for (unsigned int i = 0; i < n; ++i)
-            v[i][lane] = result[i];
+            values[i] = v[i][lane];
+          apply(values, scale[lane]);
+          for (unsigned int i = 0; i < n; ++i)
+            v[i][lane] = values[i];
         }
+    }
+
+    /** The values of the cell's DoFs become @p scale A_ref times them. */
+    void
+    apply(Number (&values)[n], const Number scale) const
+    {
+      // A_ref is symmetric: accumulate its columns, a loop over the n
+      // values of a column that the compiler vectorises
+      Number result[n] = {};
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const Number v_j = scale * values[j];
+          for (unsigned int i = 0; i < n; ++i)
+            result[i] += reference[j][i] * v_j;
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        values[i] = result[i];
     }
 
   private:
