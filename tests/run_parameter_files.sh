@@ -3,7 +3,8 @@
 # Runs every shipped parameter file parameter_files/<program>/*.prm through
 # build/<program> with --set options that make it small (level 5, two
 # steps, epsilon = 4h; biharmonic_flow: levels 3 and 4; shape_from_contour:
-# level 5, one step), then the demo (willmore_flow
+# level 5, one step; scripts/plot_shape.py on the silhouette file's
+# output), then the demo (willmore_flow
 # without arguments, shortened by --set) and scripts/plot_statistics.py on
 # its output. Passes if every run exits with status 0. Runs in the source
 # directory, since the files name their images relative to it.
@@ -25,9 +26,17 @@ for prm in parameter_files/*/*.prm; do
       run "$build_dir/$program" "$prm" --set "Convergence/Levels=3,4" \
         --set "Output directory=$output/run" ;;
     shape_from_contour/*)
+      rm -rf "$output/run"
       run "$build_dir/$program" "$prm" --set "Multilevel/Levels=5" \
         --set "Multilevel/Steps per level=1" \
-        --set "Output directory=$output/run" ;;
+        --set "Output directory=$output/run"
+      # the cookbook's picture of the 3D shape (python3-vtk9 comes with
+      # libvtk9-dev)
+      case "$prm" in
+        */silhouette_*)
+          run /usr/bin/python3 scripts/plot_shape.py "$output/run"
+          [ -f "$output/run/shape.png" ] || { echo "FAIL: no shape.png"; failed=1; } ;;
+      esac ;;
     willmore_flow/al_cube_*)
       # the augmented Lagrangian's cube at level 5 vanishes at tau and is
       # taken at tau/2 (Largest inside change factor): one step
