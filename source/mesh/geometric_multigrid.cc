@@ -84,6 +84,27 @@ namespace PhaseField
 
   namespace
   {
+    /**
+     * Call @p f(index, cell) for every cell of the cell batches
+     * [@p first, @p last) of @p data, with index = batch * width + lane.
+     */
+    template <int dim, typename Number, typename Function>
+    void
+    for_each_cell(const MatrixFree<dim, Number> &data,
+                  const unsigned int             first,
+                  const unsigned int             last,
+                  const Function                &f)
+    {
+      constexpr unsigned int width = VectorizedArray<Number>::size();
+      for (unsigned int batch = first; batch < last; ++batch)
+        for (unsigned int lane = 0;
+             lane < data.n_active_entries_per_cell_batch(batch);
+             ++lane)
+          f(batch * width + lane, batch, lane);
+    }
+
+
+
     /** Whether the vertices of @p cell are those of an axis-parallel cube. */
     template <typename CellIterator>
     bool
@@ -122,12 +143,14 @@ namespace PhaseField
                 QGauss<1>(1),
                 settings);
     bool cartesian = true;
-    for (unsigned int batch = 0; batch < data.n_cell_batches(); ++batch)
-      for (unsigned int lane = 0;
-           lane < data.n_active_entries_per_cell_batch(batch);
-           ++lane)
-        cartesian = cartesian &&
-                    is_axis_parallel_cube(data.get_cell_iterator(batch, lane));
+    for_each_cell(data,
+                  0,
+                  data.n_cell_batches(),
+                  [&](unsigned int, unsigned int batch, unsigned int lane) {
+                    cartesian =
+                      cartesian && is_axis_parallel_cube(
+                                     data.get_cell_iterator(batch, lane));
+                  });
     AssertThrow(Utilities::MPI::min(cartesian ? 1 : 0,
                                     dof_handler.get_communicator()) == 1,
                 ExcMessage("The matrix-free stiffness operator needs a mesh "
@@ -141,31 +164,35 @@ namespace PhaseField
                                   const MGConstrainedDoFs &mg_constrained_dofs,
                                   const unsigned int       level)
   {
-    constexpr unsigned int n     = Q1CellStiffness<dim, float>::n;
-    constexpr unsigned int width = VectorizedArray<float>::size();
-    LevelVector            vector;
-    data.initialize_dof_vector(vector);
-    const auto &partitioner = *vector.get_partitioner();
-    const bool  boundary    = mg_constrained_dofs.have_boundary_indices();
+    constexpr unsigned int n           = Q1CellStiffness<dim, float>::n;
+    constexpr unsigned int width       = VectorizedArray<float>::size();
+    const auto            &partitioner = *data.get_vector_partitioner();
+    const bool boundary = mg_constrained_dofs.have_boundary_indices();
     dofs.assign(data.n_cell_batches() * width * n,
                 numbers::invalid_unsigned_int);
-    scale.assign(data.n_cell_batches() * width, 0.f);
     std::vector<types::global_dof_index> indices(n);
-    for (unsigned int batch = 0; batch < data.n_cell_batches(); ++batch)
-      for (unsigned int lane = 0;
-           lane < data.n_active_entries_per_cell_batch(batch);
-           ++lane)
-        {
-          const auto         cell  = data.get_cell_iterator(batch, lane);
-          const unsigned int index = batch * width + lane;
-          cell->get_mg_dof_indices(indices);
-          for (unsigned int i = 0; i < n; ++i)
-            if (!boundary ||
-                !mg_constrained_dofs.is_boundary_index(level, indices[i]))
-              dofs[index * n + i] = partitioner.global_to_local(indices[i]);
-          const double h = cell->vertex(1)[0] - cell->vertex(0)[0];
-          scale[index]   = std::pow(h, dim - 2);
-        }
+    double                               edge      = 0;
+    bool                                 same_edge = true;
+    for_each_cell(
+      data,
+      0,
+      data.n_cell_batches(),
+      [&](const unsigned int index, unsigned int batch, unsigned int lane) {
+        const auto cell = data.get_cell_iterator(batch, lane);
+        cell->get_mg_dof_indices(indices);
+        for (unsigned int i = 0; i < n; ++i)
+          if (!boundary ||
+              !mg_constrained_dofs.is_boundary_index(level, indices[i]))
+            dofs[index * n + i] = partitioner.global_to_local(indices[i]);
+        const double h = cell->vertex(1)[0] - cell->vertex(0)[0];
+        if (edge == 0)
+          edge = h;
+        same_edge = same_edge && std::abs(h - edge) <= Constants::roundoff * h;
+      });
+    AssertThrow(same_edge,
+                ExcMessage("The cells of a multigrid level must be cubes of "
+                           "one size (a mesh refined from one coarse cube)."));
+    scale = std::pow(edge, dim - 2);
   }
 
 
@@ -174,8 +201,7 @@ namespace PhaseField
   std::size_t
   Q1LevelCells<dim>::memory_consumption() const
   {
-    return dofs.capacity() * sizeof(unsigned int) +
-           scale.capacity() * sizeof(float);
+    return dofs.capacity() * sizeof(unsigned int);
   }
 
 
@@ -238,24 +264,22 @@ namespace PhaseField
     const std::pair<unsigned int, unsigned int> &cell_range) const
   {
     constexpr unsigned int n     = Q1CellStiffness<dim, float>::n;
-    constexpr unsigned int width = VectorizedArray<float>::size();
     constexpr unsigned int none  = numbers::invalid_unsigned_int;
-    for (unsigned int batch = cell_range.first; batch < cell_range.second;
-         ++batch)
-      for (unsigned int lane = 0;
-           lane < data.n_active_entries_per_cell_batch(batch);
-           ++lane)
-        {
-          const unsigned int  cell = batch * width + lane;
-          const unsigned int *dofs = cells->dofs.data() + cell * n;
-          float               values[n];
-          for (unsigned int i = 0; i < n; ++i)
-            values[i] = dofs[i] == none ? 0.f : src.local_element(dofs[i]);
-          cell_stiffness->apply(values, factor * cells->scale[cell]);
-          for (unsigned int i = 0; i < n; ++i)
-            if (dofs[i] != none)
-              dst.local_element(dofs[i]) += values[i];
-        }
+    const float            scale = factor * cells->scale;
+    for_each_cell(data,
+                  cell_range.first,
+                  cell_range.second,
+                  [&](const unsigned int cell, unsigned int, unsigned int) {
+                    const unsigned int *dofs = cells->dofs.data() + cell * n;
+                    float               values[n];
+                    for (unsigned int i = 0; i < n; ++i)
+                      values[i] =
+                        dofs[i] == none ? 0.f : src.local_element(dofs[i]);
+                    cell_stiffness->apply(values, scale);
+                    for (unsigned int i = 0; i < n; ++i)
+                      if (dofs[i] != none)
+                        dst.local_element(dofs[i]) += values[i];
+                  });
   }
 
 

@@ -73,8 +73,9 @@ namespace PhaseField
    * lanes): per cell its 2^dim DoFs as local indices of the level's
    * vectors, numbers::invalid_unsigned_int for a DoF on the Dirichlet
    * boundary (read as zero and not written, as FEEvaluation does with the
-   * level constraints), and its factor h^(dim-2). LevelStiffness gathers
-   * and scatters through these 36 bytes per cell (3D) instead of
+   * level constraints), and the factor h^(dim-2) of the level's cells (all
+   * of one edge h). LevelStiffness gathers and scatters through these 32
+   * bytes per cell (3D) instead of
    * FEEvaluation, whose generic gather and scatter took most of the time of
    * the level products (doc/scaling.md, "The matrix-free backend").
    */
@@ -85,7 +86,8 @@ namespace PhaseField
 
     /**
      * The cells of @p data, a matrix-free object of level @p level, with the
-     * boundary DoFs of @p mg_constrained_dofs.
+     * boundary DoFs of @p mg_constrained_dofs. Throws unless all cells have
+     * one edge.
      */
     Q1LevelCells(const dealii::MatrixFree<dim, float> &data,
                  const dealii::MGConstrainedDoFs      &mg_constrained_dofs,
@@ -96,7 +98,7 @@ namespace PhaseField
     memory_consumption() const;
 
     std::vector<unsigned int> dofs;
-    std::vector<float>        scale;
+    float                     scale = 0;
   };
 
 
