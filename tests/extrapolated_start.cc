@@ -1,15 +1,15 @@
 // The extrapolated start value in the time loop (doc/willmore_flow.md,
 // "Extrapolated start"): the cube of cube.prm at level 5 (eps = 4h, tau =
-// 0.03h, 8 steps, iterative solver) with the default `Time stepping /
+// 0.03h, 8 steps, the default solver) with the default `Time stepping /
 // Extrapolated start = true` and with false. Measured on 2 ranks (2026-11-28,
 // with the verbose log): from step 3 on the start is chosen by the residual of
 // the step; the extrapolated one is smaller in steps 4 and 5 (0.00818 against
-// 0.00993, 0.0121 against 0.0127), which then take 3 Newton iterations
-// instead of 5; in steps 3 and 6-8 the last result is kept and the
-// iterations are those of the run without. (The Newton counts are those
-// of the 6-sweep multigrid cycles of 2026-11-28, second change; with 3
-// sweeps steps 4 and 5 took 4 instead of 5, and step 1 9 instead of 12;
-// step 1 takes 11 since the watchdog returns, 2026-11-28.) Both
+// 0.00993, 0.0121 against 0.0127), which then take fewer Newton iterations:
+// 4 and 3 instead of 5 with the default solver in 3D since 2026-11-29
+// (matrix-free, geometric multigrid); 3 and 3 with `Type = iterative`
+// (AMG), the expected output before that date. In steps 3 and 6-8 the last
+// result is kept and the iterations are those of the run without. (Step 1
+// takes 11 since the watchdog returns, 2026-11-28.) Both
 // runs solve the same steps to the Newton tolerance: the energies and inside
 // measures agree to the printed digits, and the check below asks for agreement
 // to 1e-7 relative. A predictor that is never used, or a start that is taken

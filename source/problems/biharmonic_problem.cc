@@ -323,9 +323,15 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , discretization(uniform_mesh<dim>(level,
-                                       parameters.problem.boundary_conditions,
-                                       parameters.linear_solver.backend),
+    , discretization(
+        uniform_mesh<dim>(level,
+                          parameters.problem.boundary_conditions,
+                          resolve_operator_backend(
+                            parameters.linear_solver,
+                            parameters.time.scheme.name,
+                            dim,
+                            parameters.problem.boundary_conditions ==
+                              BiharmonicBoundaryConditions::periodic)),
                      mpi_communicator)
     , exact(BiharmonicSolutions::exact_solution<dim>(
         parameters.problem.boundary_conditions))

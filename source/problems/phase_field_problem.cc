@@ -23,7 +23,9 @@ namespace PhaseField
       const MeshParameters                  &mesh = parameters.mesh;
       typename Discretization<dim>::Settings settings;
       settings.mesh    = mesh;
-      settings.backend = parameters.linear_solver.backend;
+      settings.backend = resolve_operator_backend(parameters.linear_solver,
+                                                  parameters.model.scheme.name,
+                                                  dim);
       settings.mesh.finest_level =
         std::max(mesh.finest_level, setup.finest_level);
       settings.coarsening_band_factor = setup.coarsening_band_factor;

@@ -24,7 +24,8 @@ namespace PhaseField
       entry.description =
         "the nested variational time discretization (thesis chapter 3), "
         "Newton on the (U,V,P) saddle-point system.";
-      entry.terms = ModelTerms::all();
+      entry.terms       = ModelTerms::all();
+      entry.matrix_free = true;
       entry.set_factory<NestedScheme>();
       return entry;
     }
@@ -282,6 +283,21 @@ namespace PhaseField
     if (entry.parse_parameters)
       choice.parameters = entry.parse_parameters(prm);
     return choice;
+  }
+
+
+
+  OperatorBackend
+  resolve_operator_backend(const LinearSolverParameters &solver,
+                           const std::string            &scheme,
+                           const int                     dim,
+                           const bool                    periodic)
+  {
+    if (solver.type != LinearSolverType::automatic)
+      return solver.backend;
+    return dim == 3 && !periodic && scheme_entry(scheme).matrix_free ?
+             OperatorBackend::matrix_free :
+             OperatorBackend::assembled;
   }
 
 

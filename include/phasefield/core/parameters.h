@@ -323,7 +323,12 @@ namespace PhaseField
      * backend).
      */
     LinearSolverType type;
-    OperatorBackend  backend = OperatorBackend::assembled;
+    /**
+     * The backend of `Type` = matrix-free or the others; for auto the
+     * problems choose it by dimension and scheme
+     * (resolve_operator_backend() in schemes/scheme_registry.h).
+     */
+    OperatorBackend backend = OperatorBackend::assembled;
     double           relative_tolerance;
     unsigned int     max_iterations;
 

@@ -83,6 +83,13 @@ namespace PhaseField
     std::string description;
     /** The model terms that the scheme takes. */
     ModelTerms terms;
+    /**
+     * Does the scheme run on the matrix-free backend (it only applies the
+     * stiffness operator and solves with its shifted operators)? `Linear
+     * solver / Type` = auto chooses that backend in 3D for such a scheme
+     * (resolve_operator_backend()).
+     */
+    bool matrix_free = false;
     /** Declares the scheme's own subsection (empty: it has none). */
     std::function<void(dealii::ParameterHandler &)> declare_parameters;
     /**
@@ -174,6 +181,21 @@ namespace PhaseField
   check_scheme_terms(const std::string &name,
                      const ModelTerms  &needed,
                      const std::string &program = "");
+
+  /**
+   * The operator backend of @p solver (`Linear solver / Type`) for the
+   * scheme @p scheme in dimension @p dim: the chosen one, and for `Type` =
+   * auto the matrix-free one in 3D if the scheme runs on it
+   * (SchemeEntry::matrix_free) and the boundary conditions are not
+   * periodic (@p periodic), the assembled one otherwise. The measurements
+   * behind the choice: doc/scaling.md, "Leaner set-up and a direct level
+   * kernel".
+   */
+  OperatorBackend
+  resolve_operator_backend(const LinearSolverParameters &solver,
+                           const std::string            &scheme,
+                           const int                     dim,
+                           const bool                    periodic = false);
 
   /**
    * The scheme @p settings.scheme on @p discretization, which must outlive
