@@ -1,10 +1,60 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/linear_operator.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <functional>
 #include <phasefield/schemes/nested/nested_linear_systems.h>
 
 namespace PhaseField
 {
   using namespace dealii;
+
+  namespace
+  {
+    /** S + C for SolverCG, S a matrix, C given by y += C x. */
+    template <typename SchurMatrix>
+    struct CorrectedSchur
+    {
+      const SchurMatrix                                   &s;
+      const std::function<void(Vector &, const Vector &)> &add_correction;
+
+      void
+      vmult(Vector &dst, const Vector &src) const
+      {
+        s.vmult(dst, src);
+        add_correction(dst, src);
+      }
+    };
+
+
+
+    /**
+     * CG on S + C from zero, preconditioned by @p preconditioner, to
+     * @p tolerance relative or @p max_iterations iterations (the last
+     * iterate, without an exception). Returns the iterations.
+     */
+    template <typename SchurMatrix, typename Preconditioner>
+    unsigned int
+    corrected_cg(
+      const SchurMatrix                                   &s,
+      const std::function<void(Vector &, const Vector &)> &add_correction,
+      const Preconditioner                                &preconditioner,
+      Vector                                              &x,
+      const Vector                                        &rhs,
+      const double                                         tolerance,
+      const unsigned int                                   max_iterations)
+    {
+      const CorrectedSchur<SchurMatrix> matrix{s, add_correction};
+      IterationNumberControl            control(max_iterations,
+                                     tolerance * rhs.l2_norm(),
+                                     false,
+                                     false);
+      SolverCG<Vector>                  cg(control);
+      x = 0;
+      cg.solve(matrix, x, rhs, preconditioner);
+      return control.last_step();
+    }
+  } // namespace
 
   template <int dim>
   NestedLinearSystems<dim>::NestedLinearSystems(
@@ -164,33 +214,14 @@ namespace PhaseField
     BlockVector               &dz,
     LinearSolver              &solver) const
   {
-    const double a = weights.a;
-    const double w = matrices.uu_weight;
-
-    const auto   &k   = *matrices.k;
-    const Vector &r_u = r.block(Field::U);
-    const Vector &r_v = r.block(Field::V);
-    const Vector &r_p = r.block(Field::P);
-
-    // rhs = -R_V + a R_P - K M^-1 (w R_P + R_U), w = 1 + a (+ shift)
-    Vector tmp(r_p), rhs(r_v);
-    tmp *= w;
-    tmp += r_u;
-    tmp.scale(ops.inverse_lumped_mass);
-    k.vmult(rhs, tmp);
-    rhs *= -1;
-    rhs -= r_v;
-    rhs.add(a, r_p);
-    ops.zero_constrained(rhs);
-
-    Vector            &du = dz.block(Field::U);
+    Vector rhs(r.block(Field::V));
+    reduced_rhs(matrices, r, nullptr, rhs);
     Vector            &dv = dz.block(Field::V);
-    Vector            &dp = dz.block(Field::P);
     const unsigned int iterations =
       solver.type() == LinearSolverType::direct ?
         solver.solve(matrices.s, dv, rhs) :
         solver.solve_product_form(*matrices.k_hat,
-                                  w,
+                                  matrices.uu_weight,
                                   matrices.diagonal,
                                   *matrices.g,
                                   ops.lumped_mass,
@@ -198,27 +229,222 @@ namespace PhaseField
                                   dv,
                                   rhs,
                                   &matrices.interface_mode);
-    ops.zero_constrained(dv);
-
-    // dU = M^-1 (K dV + R_P)
-    Vector k_dv(dv);
-    k.vmult(k_dv, dv);
-    du = k_dv;
-    du += r_p;
-    du.scale(ops.inverse_lumped_mass);
-
-    // dP = M^-1 (w K dV - a M dV + w R_P + R_U)
-    const double      *m = ops.lumped_mass.begin();
-    const unsigned int n = dv.locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      dp.begin()[i] = ops.inverse_lumped_mass.begin()[i] *
-                      (w * (k_dv.begin()[i] + r_p.begin()[i]) -
-                       a * m[i] * dv.begin()[i] + r_u.begin()[i]);
-    for (unsigned int bl = 0; bl < 3; ++bl)
-      ops.zero_constrained(dz.block(bl));
+    back_substitute(matrices, r, nullptr, dz);
     return iterations;
   }
 
+
+
+  template <int dim>
+  void
+  NestedLinearSystems<dim>::reduced_rhs(const NestedMatrices<dim> &matrices,
+                                        const BlockVector         &r,
+                                        const Vector              *u,
+                                        Vector                    &rhs) const
+  {
+    const Vector &r_u = r.block(Field::U);
+    const Vector &r_v = r.block(Field::V);
+    const Vector &r_p = r.block(Field::P);
+
+    // tmp = M^-1 (w R_P + R_U [+ H_d M^-1 R_P]), w = 1 + a (+ shift)
+    Vector tmp(r_p);
+    tmp = 0;
+    if (u != nullptr)
+      {
+        Vector m_inv_r_p(r_p);
+        m_inv_r_p.scale(ops.inverse_lumped_mass);
+        physics.add_data_term_hessian_vmult(*u, m_inv_r_p, tmp);
+      }
+    tmp.add(matrices.uu_weight, r_p);
+    tmp += r_u;
+    tmp.scale(ops.inverse_lumped_mass);
+    // rhs = -R_V + a R_P - K tmp
+    matrices.k->vmult(rhs, tmp);
+    rhs *= -1;
+    rhs -= r_v;
+    rhs.add(weights.a, r_p);
+    ops.zero_constrained(rhs);
+  }
+
+
+
+  template <int dim>
+  void
+  NestedLinearSystems<dim>::back_substitute(const NestedMatrices<dim> &matrices,
+                                            const BlockVector         &r,
+                                            const Vector              *u,
+                                            BlockVector               &dz) const
+  {
+    const double  a   = weights.a;
+    const double  w   = matrices.uu_weight;
+    const Vector &r_u = r.block(Field::U);
+    const Vector &r_p = r.block(Field::P);
+    Vector       &du  = dz.block(Field::U);
+    Vector       &dv  = dz.block(Field::V);
+    Vector       &dp  = dz.block(Field::P);
+    ops.zero_constrained(dv);
+
+    // dU = M^-1 (K dV + R_P)
+    matrices.k->vmult(du, dv);
+    du += r_p;
+    du.scale(ops.inverse_lumped_mass);
+    ops.zero_constrained(du);
+
+    // dP = M^-1 (w M dU - a M dV + R_U [+ H_d dU])
+    dp = 0;
+    if (u != nullptr)
+      physics.add_data_term_hessian_vmult(*u, du, dp);
+    const double      *m = ops.lumped_mass.begin();
+    const unsigned int n = dv.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      dp.begin()[i] =
+        ops.inverse_lumped_mass.begin()[i] *
+        (dp.begin()[i] + m[i] * (w * du.begin()[i] - a * dv.begin()[i]) +
+         r_u.begin()[i]);
+    for (unsigned int bl = 0; bl < 3; ++bl)
+      ops.zero_constrained(dz.block(bl));
+  }
+
+
+
+  template <int dim>
+  void
+  NestedLinearSystems<dim>::add_data_schur_vmult(
+    const NestedMatrices<dim> &matrices,
+    const Vector              &u,
+    const Vector              &x,
+    Vector                    &y) const
+  {
+    if (!physics.has_data_term())
+      return;
+    Vector x_free(x), tmp(x), h_tmp(x);
+    ops.zero_constrained(x_free);
+    // tmp = M^-1 K x, h_tmp = M^-1 H_d tmp, y += K h_tmp
+    matrices.k->vmult(tmp, x_free);
+    tmp.scale(ops.inverse_lumped_mass);
+    h_tmp = 0;
+    physics.add_data_term_hessian_vmult(u, tmp, h_tmp);
+    h_tmp.scale(ops.inverse_lumped_mass);
+    matrices.k->vmult(tmp, h_tmp);
+    ops.zero_constrained(tmp);
+    y += tmp;
+  }
+
+
+
+  template <int dim>
+  bool
+  NestedLinearSystems<dim>::setup_s_preconditioner(
+    NestedMatrices<dim>   &matrices,
+    const LinearSolverType type) const
+  {
+    if (type == LinearSolverType::iterative)
+      {
+        matrices.s_preconditioner =
+          std::make_unique<SchurPreconditioner>(*matrices.g,
+                                                ops.lumped_mass,
+                                                &matrices.interface_mode);
+        return true;
+      }
+    const bool same_size = matrices.s_factorization &&
+                           matrices.s_factorization->size() == matrices.s.m();
+    if (same_size && !matrices.s_factorization_stale)
+      return false;
+    if (same_size)
+      matrices.s_factorization->refactorize(matrices.s);
+    else
+      {
+        // free the old factors before the new ones are computed
+        matrices.s_factorization.reset();
+        matrices.s_factorization =
+          std::make_unique<DirectFactorization>(matrices.s, 0);
+      }
+    matrices.s_factorization_stale = false;
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  NestedLinearSystems<dim>::record_first_solve(
+    NestedMatrices<dim> &matrices,
+    const bool           fresh,
+    const unsigned int   iterations) const
+  {
+    if (fresh)
+      matrices.s_factorization_fresh_iterations = iterations;
+    else if (iterations > s_refactorization_factor *
+                              matrices.s_factorization_fresh_iterations +
+                            1)
+      matrices.s_factorization_stale = true;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NestedLinearSystems<dim>::solve_data_term_elimination(
+    const NestedMatrices<dim> &matrices,
+    const Vector              &u,
+    const BlockVector         &r,
+    BlockVector               &dz,
+    const LinearSolverType     type,
+    const double               tolerance,
+    const unsigned int         max_iterations) const
+  {
+    Vector rhs(r.block(Field::V));
+    reduced_rhs(matrices, r, &u, rhs);
+    const std::function<void(Vector &, const Vector &)> add_data_part =
+      [&](Vector &y, const Vector &x) {
+        add_data_schur_vmult(matrices, u, x, y);
+      };
+    Vector            &dv = dz.block(Field::V);
+    const unsigned int iterations =
+      type == LinearSolverType::direct ?
+        corrected_cg(matrices.s,
+                     add_data_part,
+                     *matrices.s_factorization,
+                     dv,
+                     rhs,
+                     tolerance,
+                     max_iterations) :
+        corrected_cg(ProductFormMatrix(*matrices.k_hat,
+                                       matrices.uu_weight,
+                                       matrices.diagonal,
+                                       ops.inverse_lumped_mass),
+                     add_data_part,
+                     *matrices.s_preconditioner,
+                     dv,
+                     rhs,
+                     tolerance,
+                     max_iterations);
+    back_substitute(matrices, r, &u, dz);
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NestedLinearSystems<dim>::solve_without_area_term(
+    const BlockVector     &z,
+    const BlockVector     &r,
+    BlockVector           &dz,
+    const LinearSolverType type,
+    const double           tolerance,
+    const unsigned int     max_iterations,
+    const double           shift)
+  {
+    NestedMatrices<dim>  local;
+    NestedMatrices<dim> &matrices = storage(local);
+    matrices.s_preconditioner.reset();
+    matrices.s_factorization_stale = true;
+    build_reduced_matrices(z, matrices, type, shift);
+    setup_s_preconditioner(matrices, type);
+    return solve_data_term_elimination(
+      matrices, z.block(Field::U), r, dz, type, tolerance, max_iterations);
+  }
 
 
   template <int dim>
@@ -403,32 +629,33 @@ namespace PhaseField
   {
     NestedMatrices<dim>  local;
     NestedMatrices<dim> &matrices = storage(local);
+    // the multigrid hierarchy refers to G, which is rebuilt
+    matrices.s_preconditioner.reset();
     build_reduced_matrices(z, matrices, solver.type(), shift);
-    if (!matrices.preconditioner_solver)
-      matrices.preconditioner_solver =
-        std::make_unique<LinearSolver>(solver.type(),
-                                       area_preconditioner_tolerance,
-                                       area_preconditioner_max_iterations);
-    LinearSolver &reduced_solver = *matrices.preconditioner_solver;
-    // iterative: one multigrid hierarchy of this S for all the solves
-    // with it (direct: a kept factorisation while it preconditions well)
-    if (solver.type() == LinearSolverType::iterative)
-      {
-        reduced_solver.set_constant_matrix(true);
-        reduced_solver.reset();
-      }
+    const bool fresh = setup_s_preconditioner(matrices, solver.type());
 
     LinearOperator<BlockVector> jacobian;
     jacobian.vmult = [&](BlockVector &y, const BlockVector &x) {
       physics.apply_jacobian(*matrices.k, z, x, y, shift);
     };
-    // the elimination solves J0 dZ = -R: dst = J0^-1 src
+    // the elimination solves J0 dZ = -R: dst = J0^-1 src (inexactly)
     BlockVector                 minus_src(r);
+    bool                        first = true;
     LinearOperator<BlockVector> preconditioner;
     preconditioner.vmult = [&](BlockVector &dst, const BlockVector &src) {
       minus_src = src;
       minus_src *= -1;
-      solve_reduced_system(matrices, minus_src, dst, reduced_solver);
+      const unsigned int iterations =
+        solve_data_term_elimination(matrices,
+                                    z.block(Field::U),
+                                    minus_src,
+                                    dst,
+                                    solver.type(),
+                                    area_preconditioner_tolerance,
+                                    area_preconditioner_max_iterations);
+      if (first && solver.type() == LinearSolverType::direct)
+        record_first_solve(matrices, fresh, iterations);
+      first = false;
     };
     BlockVector rhs(r);
     rhs *= -1;
