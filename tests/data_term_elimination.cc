@@ -1,19 +1,17 @@
-// The preconditioner of the monolithic contour step's Newton systems
-// (NestedLinearSystems::solve_area_system()): the elimination of the
-// Jacobian J0 without the area term but with the data term H_d in the UU
-// block (NestedLinearSystems::solve_without_area_term(): the Schur
-// complement S' = S + K M^-1 H_d M^-1 K by CG preconditioned with S^-1).
-// With an inner tolerance at round-off it is the exact inverse of J0:
-// for x with zero constrained entries, y = J0 x, the elimination applied
-// to y gives back x. J0 is the nested step's Jacobian with eta = 0 (no
-// area term), the mismatch of Fig. 6.5 as data term (its step model: the
+// The elimination of the monolithic contour step's Jacobian J0 without
+// the area term but with the data term H_d in the UU block
+// (NestedLinearSystems::solve_without_area_term(): the Schur complement
+// S' = S + K M^-1 H_d M^-1 K by CG preconditioned with S^-1). With an
+// inner tolerance at round-off it is the exact inverse of J0: for x with
+// zero constrained entries, y = J0 x, the elimination applied to y gives
+// back x. J0 is the nested step's Jacobian with eta = 0 (no area term),
+// the mismatch of Fig. 6.5 as data term (its step model: the
 // Gauss-Newton product plus the majoriser's curvature) at a state away
 // from U^k, on an adaptive 2D mesh with hanging nodes; for the direct
 // (factorised S) and the iterative (product-form S, multigrid
 // preconditioner) type, with and without a Levenberg-Marquardt shift.
 // Also checked: the data term's share of J0 x is not small (so that an
-// elimination without it would not pass), and the full Newton solve with
-// the area term (eta = 0.05) takes a few flexible GMRES iterations.
+// elimination without it would not pass).
 
 #include "adaptive_test_mesh.h"
 #include "tests.h"
@@ -34,14 +32,11 @@ namespace
   /** The weights of Fig. 6.5. */
   constexpr double gamma_weight    = 10;
   constexpr double willmore_weight = 0.05;
-  constexpr double area_weight     = 0.05;
   /** Inner CG tolerance of the exact elimination and its iteration cap. */
   constexpr double       exact_tolerance      = 1e-14;
   constexpr unsigned int exact_max_iterations = 2000;
   /** Relative error of the exact elimination that the test accepts. */
   constexpr double inverse_tolerance = 1e-8;
-  /** Flexible GMRES iterations allowed to the full Newton solve. */
-  constexpr unsigned int max_gmres_iterations = 15;
 
   /** "< tol" or "TOO LARGE (value)" for a relative error. */
   std::string
@@ -163,24 +158,6 @@ namespace
                        << below(std::sqrt(error / size), inverse_tolerance)
                        << std::endl;
       }
-
-    // the Newton system with the area term: flexible GMRES preconditioned
-    // by the elimination of J0 (inner tolerance 1e-2)
-    coeff.outer.area_weight = area_weight;
-    NestedStep<dim> area_step(mesh.discretization, coeff, old_u);
-    area_step.residual(z, y);
-    const unsigned int iterations = area_step.solve_jacobian(z, y, dz, solver);
-    area_step.jacobian_vmult(z, dz, x);
-    x += y;
-    Testing::log() << "  with the area term: |J dz + R| / |R| "
-                   << below(area_step.residual_norm(x) /
-                              area_step.residual_norm(y),
-                            1e-10)
-                   << ", GMRES iterations <= " << max_gmres_iterations << ": "
-                   << (iterations <= max_gmres_iterations) << std::endl;
-    if (iterations > max_gmres_iterations)
-      Testing::log() << "  (" << iterations << " GMRES iterations)"
-                     << std::endl;
   }
 } // namespace
 

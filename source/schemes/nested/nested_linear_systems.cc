@@ -4,6 +4,8 @@
 #include <deal.II/lac/solver_control.h>
 #include <functional>
 #include <phasefield/schemes/nested/nested_linear_systems.h>
+#include <phasefield/solvers/direct_factorization.h>
+#include <phasefield/solvers/product_form.h>
 
 namespace PhaseField
 {
@@ -248,15 +250,14 @@ namespace PhaseField
 
     // tmp = M^-1 (w R_P + R_U [+ H_d M^-1 R_P]), w = 1 + a (+ shift)
     Vector tmp(r_p);
-    tmp = 0;
+    tmp *= matrices.uu_weight;
+    tmp += r_u;
     if (u != nullptr)
       {
         Vector m_inv_r_p(r_p);
         m_inv_r_p.scale(ops.inverse_lumped_mass);
         physics.add_data_term_hessian_vmult(*u, m_inv_r_p, tmp);
       }
-    tmp.add(matrices.uu_weight, r_p);
-    tmp += r_u;
     tmp.scale(ops.inverse_lumped_mass);
     // rhs = -R_V + a R_P - K tmp
     matrices.k->vmult(rhs, tmp);
@@ -285,12 +286,13 @@ namespace PhaseField
     ops.zero_constrained(dv);
 
     // dU = M^-1 (K dV + R_P)
-    matrices.k->vmult(du, dv);
+    Vector k_dv(dv);
+    matrices.k->vmult(k_dv, dv);
+    du = k_dv;
     du += r_p;
     du.scale(ops.inverse_lumped_mass);
-    ops.zero_constrained(du);
 
-    // dP = M^-1 (w M dU - a M dV + R_U [+ H_d dU])
+    // dP = M^-1 (w (K dV + R_P) - a M dV + R_U [+ H_d dU])
     dp = 0;
     if (u != nullptr)
       physics.add_data_term_hessian_vmult(*u, du, dp);
@@ -299,8 +301,8 @@ namespace PhaseField
     for (unsigned int i = 0; i < n; ++i)
       dp.begin()[i] =
         ops.inverse_lumped_mass.begin()[i] *
-        (dp.begin()[i] + m[i] * (w * du.begin()[i] - a * dv.begin()[i]) +
-         r_u.begin()[i]);
+        (w * (k_dv.begin()[i] + r_p.begin()[i]) - a * m[i] * dv.begin()[i] +
+         r_u.begin()[i] + dp.begin()[i]);
     for (unsigned int bl = 0; bl < 3; ++bl)
       ops.zero_constrained(dz.block(bl));
   }
@@ -333,99 +335,6 @@ namespace PhaseField
 
 
   template <int dim>
-  bool
-  NestedLinearSystems<dim>::setup_s_preconditioner(
-    NestedMatrices<dim>   &matrices,
-    const LinearSolverType type) const
-  {
-    if (type == LinearSolverType::iterative)
-      {
-        matrices.s_preconditioner =
-          std::make_unique<SchurPreconditioner>(*matrices.g,
-                                                ops.lumped_mass,
-                                                &matrices.interface_mode);
-        return true;
-      }
-    const bool same_size = matrices.s_factorization &&
-                           matrices.s_factorization->size() == matrices.s.m();
-    if (same_size && !matrices.s_factorization_stale)
-      return false;
-    if (same_size)
-      matrices.s_factorization->refactorize(matrices.s);
-    else
-      {
-        // free the old factors before the new ones are computed
-        matrices.s_factorization.reset();
-        matrices.s_factorization =
-          std::make_unique<DirectFactorization>(matrices.s, 0);
-      }
-    matrices.s_factorization_stale = false;
-    return true;
-  }
-
-
-
-  template <int dim>
-  void
-  NestedLinearSystems<dim>::record_first_solve(
-    NestedMatrices<dim> &matrices,
-    const bool           fresh,
-    const unsigned int   iterations) const
-  {
-    if (fresh)
-      matrices.s_factorization_fresh_iterations = iterations;
-    else if (iterations > s_refactorization_factor *
-                              matrices.s_factorization_fresh_iterations +
-                            1)
-      matrices.s_factorization_stale = true;
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  NestedLinearSystems<dim>::solve_data_term_elimination(
-    const NestedMatrices<dim> &matrices,
-    const Vector              &u,
-    const BlockVector         &r,
-    BlockVector               &dz,
-    const LinearSolverType     type,
-    const double               tolerance,
-    const unsigned int         max_iterations) const
-  {
-    Vector rhs(r.block(Field::V));
-    reduced_rhs(matrices, r, &u, rhs);
-    const std::function<void(Vector &, const Vector &)> add_data_part =
-      [&](Vector &y, const Vector &x) {
-        add_data_schur_vmult(matrices, u, x, y);
-      };
-    Vector            &dv = dz.block(Field::V);
-    const unsigned int iterations =
-      type == LinearSolverType::direct ?
-        corrected_cg(matrices.s,
-                     add_data_part,
-                     *matrices.s_factorization,
-                     dv,
-                     rhs,
-                     tolerance,
-                     max_iterations) :
-        corrected_cg(ProductFormMatrix(*matrices.k_hat,
-                                       matrices.uu_weight,
-                                       matrices.diagonal,
-                                       ops.inverse_lumped_mass),
-                     add_data_part,
-                     *matrices.s_preconditioner,
-                     dv,
-                     rhs,
-                     tolerance,
-                     max_iterations);
-    back_substitute(matrices, r, &u, dz);
-    return iterations;
-  }
-
-
-
-  template <int dim>
   unsigned int
   NestedLinearSystems<dim>::solve_without_area_term(
     const BlockVector     &z,
@@ -438,13 +347,47 @@ namespace PhaseField
   {
     NestedMatrices<dim>  local;
     NestedMatrices<dim> &matrices = storage(local);
-    matrices.s_preconditioner.reset();
-    matrices.s_factorization_stale = true;
     build_reduced_matrices(z, matrices, type, shift);
-    setup_s_preconditioner(matrices, type);
-    return solve_data_term_elimination(
-      matrices, z.block(Field::U), r, dz, type, tolerance, max_iterations);
+    const Vector &u = z.block(Field::U);
+    Vector        rhs(r.block(Field::V));
+    reduced_rhs(matrices, r, &u, rhs);
+    const std::function<void(Vector &, const Vector &)> add_data_part =
+      [&](Vector &y, const Vector &x) {
+        add_data_schur_vmult(matrices, u, x, y);
+      };
+    Vector      &dv = dz.block(Field::V);
+    unsigned int iterations;
+    if (type == LinearSolverType::direct)
+      {
+        const DirectFactorization s_inverse(matrices.s, 0);
+        iterations = corrected_cg(matrices.s,
+                                  add_data_part,
+                                  s_inverse,
+                                  dv,
+                                  rhs,
+                                  tolerance,
+                                  max_iterations);
+      }
+    else
+      {
+        const SchurPreconditioner s_inverse(*matrices.g,
+                                            ops.lumped_mass,
+                                            &matrices.interface_mode);
+        iterations = corrected_cg(ProductFormMatrix(*matrices.k_hat,
+                                                    matrices.uu_weight,
+                                                    matrices.diagonal,
+                                                    ops.inverse_lumped_mass),
+                                  add_data_part,
+                                  s_inverse,
+                                  dv,
+                                  rhs,
+                                  tolerance,
+                                  max_iterations);
+      }
+    back_substitute(matrices, r, &u, dz);
+    return iterations;
   }
+
 
 
   template <int dim>
@@ -629,33 +572,32 @@ namespace PhaseField
   {
     NestedMatrices<dim>  local;
     NestedMatrices<dim> &matrices = storage(local);
-    // the multigrid hierarchy refers to G, which is rebuilt
-    matrices.s_preconditioner.reset();
     build_reduced_matrices(z, matrices, solver.type(), shift);
-    const bool fresh = setup_s_preconditioner(matrices, solver.type());
+    if (!matrices.preconditioner_solver)
+      matrices.preconditioner_solver =
+        std::make_unique<LinearSolver>(solver.type(),
+                                       area_preconditioner_tolerance,
+                                       area_preconditioner_max_iterations);
+    LinearSolver &reduced_solver = *matrices.preconditioner_solver;
+    // iterative: one multigrid hierarchy of this S for all the solves
+    // with it (direct: a kept factorisation while it preconditions well)
+    if (solver.type() == LinearSolverType::iterative)
+      {
+        reduced_solver.set_constant_matrix(true);
+        reduced_solver.reset();
+      }
 
     LinearOperator<BlockVector> jacobian;
     jacobian.vmult = [&](BlockVector &y, const BlockVector &x) {
       physics.apply_jacobian(*matrices.k, z, x, y, shift);
     };
-    // the elimination solves J0 dZ = -R: dst = J0^-1 src (inexactly)
+    // the elimination solves J0 dZ = -R: dst = J0^-1 src
     BlockVector                 minus_src(r);
-    bool                        first = true;
     LinearOperator<BlockVector> preconditioner;
     preconditioner.vmult = [&](BlockVector &dst, const BlockVector &src) {
       minus_src = src;
       minus_src *= -1;
-      const unsigned int iterations =
-        solve_data_term_elimination(matrices,
-                                    z.block(Field::U),
-                                    minus_src,
-                                    dst,
-                                    solver.type(),
-                                    area_preconditioner_tolerance,
-                                    area_preconditioner_max_iterations);
-      if (first && solver.type() == LinearSolverType::direct)
-        record_first_solve(matrices, fresh, iterations);
-      first = false;
+      solve_reduced_system(matrices, minus_src, dst, reduced_solver);
     };
     BlockVector rhs(r);
     rhs *= -1;

@@ -8,9 +8,7 @@
 #include <phasefield/mesh/stiffness_operator.h>
 #include <phasefield/mesh/stiffness_square.h>
 #include <phasefield/schemes/nested/nested_physics.h>
-#include <phasefield/solvers/direct_factorization.h>
 #include <phasefield/solvers/linear_solver.h>
-#include <phasefield/solvers/product_form.h>
 
 namespace PhaseField
 {
@@ -43,27 +41,12 @@ namespace PhaseField
      */
     double uu_weight = 0;
     /**
-     * The preconditioner of S for the CG solves of S' = S + K M^-1 H_d
-     * M^-1 K in NestedLinearSystems::solve_area_system() (the contour
-     * problem): the factorisation of the assembled S of an earlier Newton
-     * system on this mesh (direct; see s_factorization_fresh_iterations)
-     * ...
+     * The solver of S when the elimination preconditions the 3-field
+     * system of an area term without fixed U values (the contour
+     * problem): it keeps its factorisation of S across Newton iterations
+     * as the scheme's solver does for willmore_flow.
      */
-    std::unique_ptr<DirectFactorization> s_factorization;
-    /**
-     * The CG iterations of the first solve of S' after the factorisation
-     * of S. A Newton system whose first solve with the kept factorisation
-     * takes more than NestedLinearSystems::s_refactorization_factor times
-     * as many sets s_factorization_stale, and the next Newton system
-     * factorises its S (reusing MUMPS's analysis).
-     */
-    unsigned int s_factorization_fresh_iterations = 0;
-    bool         s_factorization_stale            = false;
-    /**
-     * ... or the product-form preconditioner G^-1 M G^-1 of S (iterative;
-     * one multigrid hierarchy per Newton system).
-     */
-    std::unique_ptr<SchurPreconditioner> s_preconditioner;
+    std::unique_ptr<LinearSolver> preconditioner_solver;
     /**
      * The assembled 3-field Jacobian (restoration terms): its sparsity
      * pattern depends on the mesh only, so it is built once per mesh and
@@ -90,10 +73,9 @@ namespace PhaseField
    * - with the area term and U held fixed (edge restoration), J is
    *   assembled as one sparse matrix (unknowns interleaved, (U_i, V_i,
    *   P_i)) and solved by the direct solver (2D);
-   * - with the area term or a data term and all U free (the contour
-   *   problem), flexible GMRES on J preconditioned by the elimination of
-   *   J without the area term but with the data term H_d in the UU block
-   *   (solve_without_area_term()).
+   * - with the area term and all U free (the contour problem), flexible
+   *   GMRES on J preconditioned by the elimination without the area term
+   *   (and without a data term).
    */
   template <int dim>
   class NestedLinearSystems
@@ -156,8 +138,11 @@ namespace PhaseField
      * preconditioner of S for @p type iterative) to the relative
      * tolerance @p tolerance or @p max_iterations iterations, whichever
      * comes first. The matrices of @p z and the preconditioner of S are
-     * built here. With @p tolerance at round-off this is J0^-1. Returns
-     * the CG iterations.
+     * built here. With @p tolerance at round-off this is J0^-1
+     * (tests/data_term_elimination). Not used as the preconditioner of
+     * solve_area_system(): it cut the GMRES iterations 5-10 times but not
+     * the time (doc/shape_from_contour.md, "The preconditioner with the
+     * data term"). Returns the CG iterations.
      */
     unsigned int
     solve_without_area_term(const BlockVector     &z,
@@ -209,40 +194,6 @@ namespace PhaseField
                     const Vector              *u,
                     BlockVector               &dz) const;
 
-    /**
-     * The preconditioner of S for the solves of S' for the matrices built
-     * last: the product-form preconditioner (iterative), or the
-     * factorisation of S (direct) if there is none of this size or it is
-     * stale (NestedMatrices::s_factorization_stale). Returns whether it
-     * was set up (not kept).
-     */
-    bool
-    setup_s_preconditioner(NestedMatrices<dim>   &matrices,
-                           const LinearSolverType type) const;
-
-    /**
-     * Record the CG iterations of the first solve of S' of a Newton
-     * system (direct type): those after a set-up of the factorisation
-     * (@p fresh), or mark a kept factorisation stale.
-     */
-    void
-    record_first_solve(NestedMatrices<dim> &matrices,
-                       const bool           fresh,
-                       const unsigned int   iterations) const;
-
-    /**
-     * solve_without_area_term() with the matrices and the preconditioner
-     * of S already built.
-     */
-    unsigned int
-    solve_data_term_elimination(const NestedMatrices<dim> &matrices,
-                                const Vector              &u,
-                                const BlockVector         &r,
-                                BlockVector               &dz,
-                                const LinearSolverType     type,
-                                const double               tolerance,
-                                const unsigned int max_iterations) const;
-
     /** @p y += K M^-1 H_d M^-1 K @p x (zero at constrained DoFs). */
     void
     add_data_schur_vmult(const NestedMatrices<dim> &matrices,
@@ -280,20 +231,22 @@ namespace PhaseField
                       const double       shift) const;
 
     /**
-     * J dZ = -R for the Jacobian with an area term or a data term and no
-     * fixed U values (the contour problem): flexible GMRES on J (applied
-     * matrix-free), preconditioned by the elimination of J0, the Jacobian
-     * without the area term but with the data term
-     * (solve_without_area_term(): S' by CG preconditioned with S^-1 to
-     * area_preconditioner_tolerance). The outer GMRES absorbs only the
-     * area term's part of the UU block, tau eta (L + M[Psi''(U)]/(2
-     * eps^2)), which is smaller than (1 + a) M by about eta ttau^2/h^2
-     * (eta h^2 for ttau = h^2), and the inexactness of the inner solves;
-     * only the scalar S is factorised (direct) instead of the 3-field
-     * matrix. The elimination without the data term, which left H_d to
-     * GMRES, took 50-250 GMRES iterations per Newton system
-     * (doc/shape_from_contour.md, "The preconditioner with the data
-     * term"). Returns the GMRES iterations.
+     * J dZ = -R for the Jacobian with an area term and no fixed U values
+     * (the contour problem): flexible GMRES on J (applied matrix-free,
+     * with the data term's Hessian H_d of the monolithic contour
+     * coupling), preconditioned by the elimination of the Jacobian
+     * without the area term and without H_d, whose UU block is
+     * (1 + a + shift) M. The area term's part of the UU block, tau eta (L
+     * + M[Psi''(U)]/(2 eps^2)), is smaller than (1 + a) M by about eta
+     * ttau^2/h^2 (eta h^2 for ttau = h^2), so a few GMRES iterations
+     * suffice for it, and only the scalar S is factorised instead of the
+     * 3-field matrix. H_d is left to GMRES: 50-250 iterations per Newton
+     * system with the mismatch. The elimination with H_d
+     * (solve_without_area_term(), its S' by inner CG) took 5-10 times
+     * fewer GMRES iterations but as much or more time (2D 1.2-2x per
+     * regular step, 12x in the first step of a level; 3D: slower in the
+     * first steps of level 5; doc/shape_from_contour.md, "The preconditioner
+     * with the data term"), so it is not used. Returns the GMRES iterations.
      */
     unsigned int
     solve_area_system(const BlockVector &z,
@@ -313,22 +266,14 @@ namespace PhaseField
                    dealii::TrilinosWrappers::SparseMatrix &k) const;
 
     /**
-     * Relative tolerance and iteration limit of the CG solves of S' that
-     * precondition solve_area_system() (preconditioned by the
-     * factorisation of S, direct, or by the product-form preconditioner
-     * of S with one multigrid hierarchy per Newton system, iterative); an
-     * unconverged solve is used as it is (the outer GMRES is flexible).
-     * FIXME measured in doc/shape_from_contour.md.
+     * Relative tolerance and iteration limit of the solves of S that
+     * precondition solve_area_system() (direct: GMRES with a kept
+     * factorisation of S; iterative: CG with one multigrid hierarchy per
+     * Newton system); 1e-2 against 1e-4: doc/benchmarks.md, "The area
+     * term's preconditioner tolerance".
      */
     static constexpr double       area_preconditioner_tolerance      = 1e-2;
     static constexpr unsigned int area_preconditioner_max_iterations = 100;
-
-    /**
-     * A kept factorisation of S is stale when the first solve of S' of a
-     * Newton system needs more than this factor times the iterations of
-     * the first solve after the factorisation (plus one).
-     */
-    static constexpr double s_refactorization_factor = 1.5;
 
     const NestedPhysics<dim>   &physics;
     const LumpedOperators<dim> &ops;
