@@ -140,7 +140,7 @@ namespace PhaseField
      * comes first. The matrices of @p z and the preconditioner of S are
      * built here. With @p tolerance at round-off this is J0^-1
      * (tests/data_term_elimination). Not used as the preconditioner of
-     * solve_area_system(): it cut the GMRES iterations 5-10 times but not
+     * solve_area_system(): it cut the GMRES iterations 5-7 times but not
      * the time (doc/shape_from_contour.md, "The preconditioner with the
      * data term"). Returns the CG iterations.
      */
@@ -242,10 +242,11 @@ namespace PhaseField
      * suffice for it, and only the scalar S is factorised instead of the
      * 3-field matrix. H_d is left to GMRES: 50-250 iterations per Newton
      * system with the mismatch. The elimination with H_d
-     * (solve_without_area_term(), its S' by inner CG) took 5-10 times
-     * fewer GMRES iterations but as much or more time (2D 1.2-2x per
-     * regular step, 12x in the first step of a level; 3D: slower in the
-     * first steps of level 5; doc/shape_from_contour.md, "The preconditioner
+     * (solve_without_area_term(), its S' by inner CG) took 5-7 times
+     * fewer GMRES iterations but more time (2D: 1.3-1.8 times per
+     * regular step, 12 times in the first step of a level; 3D: twice the
+     * user time in the first six steps of level 5;
+     * doc/shape_from_contour.md, "The preconditioner
      * with the data term"), so it is not used. Returns the GMRES iterations.
      */
     unsigned int
