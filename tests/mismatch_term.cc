@@ -9,6 +9,7 @@
 // adaptive mesh with hanging nodes, 2D and 3D.
 
 #include "adaptive_test_mesh.h"
+#include "sphere_mismatch.h"
 #include "tests.h"
 
 #include <cmath>
@@ -30,19 +31,13 @@ namespace
     const Testing::AdaptiveTestMesh<dim> mesh;
     const auto                          &ops  = mesh.operators;
     const MPI_Comm                       comm = MPI_COMM_WORLD;
-    const unsigned int                   level =
-      mesh.discretization.get_settings().mesh.finest_level;
-    const HuffmanLabeling::LabelingGrid<dim> grid(level);
-    Point<dim>                               c;
-    for (unsigned int d = 0; d < dim; ++d)
-      c[d] = 0.5;
-    const Shapes::SphereDistance<dim> target_sphere(c, 0.25);
-    const std::vector<double> target = HuffmanLabeling::labeling_of_function(
-      Shapes::PhaseFieldProfile<dim>(target_sphere, mesh.eps), grid, comm);
-    const MismatchTerm<dim> term(mesh.discretization,
-                                 level,
-                                 target,
-                                 gamma_weight);
+    const std::vector<double> target = Testing::sphere_target_labeling(mesh);
+    const MismatchTerm<dim>   term(
+      mesh.discretization,
+      mesh.discretization.get_settings().mesh.finest_level,
+      target,
+      gamma_weight);
+    const HuffmanLabeling::LabelingGrid<dim> &grid = term.grid();
 
     TrilinosWrappers::MPI::Vector u(ops.locally_owned_dofs, comm);
     mesh.discretization.interpolate(Shapes::PhaseFieldProfile<dim>(mesh.sphere,

@@ -23,6 +23,7 @@
 // difference is zero); the target is the labeling of another sphere.
 
 #include "adaptive_test_mesh.h"
+#include "sphere_mismatch.h"
 #include "tests.h"
 
 #include <cmath>
@@ -64,19 +65,9 @@ namespace
     const MPI_Comm                       comm = MPI_COMM_WORLD;
     const Testing::AdaptiveTestMesh<dim> mesh;
     const LumpedOperators<dim>          &ops = mesh.operators;
-    const unsigned int                   level =
-      mesh.discretization.get_settings().mesh.finest_level;
-    const HuffmanLabeling::LabelingGrid<dim> grid(level);
-    Point<dim>                               c;
-    for (unsigned int d = 0; d < dim; ++d)
-      c[d] = 0.5;
-    const Shapes::SphereDistance<dim> target_sphere(c, 0.25);
-    const MismatchTerm<dim>           term(
-      mesh.discretization,
-      level,
-      HuffmanLabeling::labeling_of_function(
-        Shapes::PhaseFieldProfile<dim>(target_sphere, mesh.eps), grid, comm),
-      gamma_weight);
+    const MismatchTerm<dim>              term =
+      Testing::sphere_mismatch_term(mesh, gamma_weight);
+    const HuffmanLabeling::LabelingGrid<dim> &grid = term.grid();
 
     NestedCoefficients coeff;
     coeff.epsilon               = mesh.eps;
