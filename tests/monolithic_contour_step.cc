@@ -44,17 +44,6 @@ namespace
   constexpr double gamma_weight = 10;
   constexpr double step         = 1e-6;
 
-  /** "< tol" or "TOO LARGE (value)" for a relative error. */
-  std::string
-  below(const double error, const double tolerance)
-  {
-    std::ostringstream text;
-    text << (error < tolerance ? "< " : "TOO LARGE: ") << tolerance;
-    if (error >= tolerance)
-      text << " (" << error << ")";
-    return text.str();
-  }
-
   template <int dim>
   void
   check(const LinearSolverType solver_type,
@@ -112,12 +101,12 @@ namespace
     const double j0    = term.value(old_u);
     const double slope = g_true * direction;
     g_model -= g_true;
-    Testing::log() << "  model at U^k: value "
-                   << below(std::abs(model->value(old_u) - j0) / j0, 1e-14)
-                   << ", gradient "
-                   << below(std::abs(g_model * direction) / std::abs(slope),
-                            1e-12)
-                   << std::endl;
+    Testing::log()
+      << "  model at U^k: value "
+      << Testing::below(std::abs(model->value(old_u) - j0) / j0, 1e-14)
+      << ", gradient "
+      << Testing::below(std::abs(g_model * direction) / std::abs(slope), 1e-12)
+      << std::endl;
 
     // R_U at U^k against the step energy with j itself
     for (unsigned int b = 0; b < 3; ++b)
@@ -149,7 +138,8 @@ namespace
         Testing::log() << "  |d merit/dU x - R_U.x| / |R_U.x| "
                        << (at_start ? "at U^k (merit with j): " :
                                       "away from U^k (merit with the model): ")
-                       << below(std::abs(fd - slope) / std::abs(slope), 1e-6)
+                       << Testing::below(std::abs(fd - slope) / std::abs(slope),
+                                         1e-6)
                        << std::endl;
       }
 
@@ -169,9 +159,9 @@ namespace
     scheme.jacobian_vmult(z, x, jx);
     rp -= jx;
     Testing::log() << "  block U: |J x - FD| / |J x| "
-                   << below(ops.dual_norm(rp.block(Field::U)) /
-                              ops.dual_norm(jx.block(Field::U)),
-                            1e-6)
+                   << Testing::below(ops.dual_norm(rp.block(Field::U)) /
+                                       ops.dual_norm(jx.block(Field::U)),
+                                     1e-6)
                    << std::endl;
     // the Newton solve (2D: in 3D at eps = h the majoriser's curvature at
     // the many flat cells makes the preconditioner that drops the data
@@ -183,9 +173,9 @@ namespace
         scheme.jacobian_vmult(z, dz, jx);
         jx += r;
         Testing::log() << "  |J dz + R| / |R| "
-                       << below(scheme.residual_norm(jx) /
-                                  scheme.residual_norm(r),
-                                1e-6)
+                       << Testing::below(scheme.residual_norm(jx) /
+                                           scheme.residual_norm(r),
+                                         1e-6)
                        << std::endl;
       }
 
@@ -202,9 +192,9 @@ namespace
     gn = 0;
     term.add_hessian_vmult(old_u, direction, 1., gn);
     Testing::log() << "  model Hessian: symmetric "
-                   << below(std::abs(e * hd - direction * he) /
-                              std::abs(e * hd),
-                            1e-12)
+                   << Testing::below(std::abs(e * hd - direction * he) /
+                                       std::abs(e * hd),
+                                     1e-12)
                    << ", d.Hd >= d.(J^T 2 gamma W J)d: "
                    << (direction * hd >= direction * gn) << std::endl;
   }

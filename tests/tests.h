@@ -22,6 +22,17 @@
 
 namespace Testing
 {
+  /** "< tol" or "TOO LARGE: tol (value)" for a relative error. */
+  inline std::string
+  below(const double error, const double tolerance)
+  {
+    std::ostringstream text;
+    text << (error < tolerance ? "< " : "TOO LARGE: ") << tolerance;
+    if (error >= tolerance)
+      text << " (" << error << ")";
+    return text.str();
+  }
+
   /** The file "output" on rank 0, a null stream elsewhere. */
   inline std::ostream &
   log()
