@@ -1,62 +1,10 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/linear_operator.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
-#include <functional>
 #include <phasefield/schemes/nested/nested_linear_systems.h>
-#include <phasefield/solvers/direct_factorization.h>
-#include <phasefield/solvers/product_form.h>
 
 namespace PhaseField
 {
   using namespace dealii;
-
-  namespace
-  {
-    /** S + C for SolverCG, S a matrix, C given by y += C x. */
-    template <typename SchurMatrix>
-    struct CorrectedSchur
-    {
-      const SchurMatrix                                   &s;
-      const std::function<void(Vector &, const Vector &)> &add_correction;
-
-      void
-      vmult(Vector &dst, const Vector &src) const
-      {
-        s.vmult(dst, src);
-        add_correction(dst, src);
-      }
-    };
-
-
-
-    /**
-     * CG on S + C from zero, preconditioned by @p preconditioner, to
-     * @p tolerance relative or @p max_iterations iterations (the last
-     * iterate, without an exception). Returns the iterations.
-     */
-    template <typename SchurMatrix, typename Preconditioner>
-    unsigned int
-    corrected_cg(
-      const SchurMatrix                                   &s,
-      const std::function<void(Vector &, const Vector &)> &add_correction,
-      const Preconditioner                                &preconditioner,
-      Vector                                              &x,
-      const Vector                                        &rhs,
-      const double                                         tolerance,
-      const unsigned int                                   max_iterations)
-    {
-      const CorrectedSchur<SchurMatrix> matrix{s, add_correction};
-      IterationNumberControl            control(max_iterations,
-                                     tolerance * rhs.l2_norm(),
-                                     false,
-                                     false);
-      SolverCG<Vector>                  cg(control);
-      x = 0;
-      cg.solve(matrix, x, rhs, preconditioner);
-      return control.last_step();
-    }
-  } // namespace
 
   template <int dim>
   NestedLinearSystems<dim>::NestedLinearSystems(
@@ -216,14 +164,33 @@ namespace PhaseField
     BlockVector               &dz,
     LinearSolver              &solver) const
   {
-    Vector rhs(r.block(Field::V));
-    reduced_rhs(matrices, r, nullptr, rhs);
+    const double a = weights.a;
+    const double w = matrices.uu_weight;
+
+    const auto   &k   = *matrices.k;
+    const Vector &r_u = r.block(Field::U);
+    const Vector &r_v = r.block(Field::V);
+    const Vector &r_p = r.block(Field::P);
+
+    // rhs = -R_V + a R_P - K M^-1 (w R_P + R_U), w = 1 + a (+ shift)
+    Vector tmp(r_p), rhs(r_v);
+    tmp *= w;
+    tmp += r_u;
+    tmp.scale(ops.inverse_lumped_mass);
+    k.vmult(rhs, tmp);
+    rhs *= -1;
+    rhs -= r_v;
+    rhs.add(a, r_p);
+    ops.zero_constrained(rhs);
+
+    Vector            &du = dz.block(Field::U);
     Vector            &dv = dz.block(Field::V);
+    Vector            &dp = dz.block(Field::P);
     const unsigned int iterations =
       solver.type() == LinearSolverType::direct ?
         solver.solve(matrices.s, dv, rhs) :
         solver.solve_product_form(*matrices.k_hat,
-                                  matrices.uu_weight,
+                                  w,
                                   matrices.diagonal,
                                   *matrices.g,
                                   ops.lumped_mass,
@@ -231,160 +198,24 @@ namespace PhaseField
                                   dv,
                                   rhs,
                                   &matrices.interface_mode);
-    back_substitute(matrices, r, nullptr, dz);
-    return iterations;
-  }
-
-
-
-  template <int dim>
-  void
-  NestedLinearSystems<dim>::reduced_rhs(const NestedMatrices<dim> &matrices,
-                                        const BlockVector         &r,
-                                        const Vector              *u,
-                                        Vector                    &rhs) const
-  {
-    const Vector &r_u = r.block(Field::U);
-    const Vector &r_v = r.block(Field::V);
-    const Vector &r_p = r.block(Field::P);
-
-    // tmp = M^-1 (w R_P + R_U [+ H_d M^-1 R_P]), w = 1 + a (+ shift)
-    Vector tmp(r_p);
-    tmp *= matrices.uu_weight;
-    tmp += r_u;
-    if (u != nullptr)
-      {
-        Vector m_inv_r_p(r_p);
-        m_inv_r_p.scale(ops.inverse_lumped_mass);
-        physics.add_data_term_hessian_vmult(*u, m_inv_r_p, tmp);
-      }
-    tmp.scale(ops.inverse_lumped_mass);
-    // rhs = -R_V + a R_P - K tmp
-    matrices.k->vmult(rhs, tmp);
-    rhs *= -1;
-    rhs -= r_v;
-    rhs.add(weights.a, r_p);
-    ops.zero_constrained(rhs);
-  }
-
-
-
-  template <int dim>
-  void
-  NestedLinearSystems<dim>::back_substitute(const NestedMatrices<dim> &matrices,
-                                            const BlockVector         &r,
-                                            const Vector              *u,
-                                            BlockVector               &dz) const
-  {
-    const double  a   = weights.a;
-    const double  w   = matrices.uu_weight;
-    const Vector &r_u = r.block(Field::U);
-    const Vector &r_p = r.block(Field::P);
-    Vector       &du  = dz.block(Field::U);
-    Vector       &dv  = dz.block(Field::V);
-    Vector       &dp  = dz.block(Field::P);
     ops.zero_constrained(dv);
 
     // dU = M^-1 (K dV + R_P)
     Vector k_dv(dv);
-    matrices.k->vmult(k_dv, dv);
+    k.vmult(k_dv, dv);
     du = k_dv;
     du += r_p;
     du.scale(ops.inverse_lumped_mass);
 
-    // dP = M^-1 (w (K dV + R_P) - a M dV + R_U [+ H_d dU])
-    dp = 0;
-    if (u != nullptr)
-      physics.add_data_term_hessian_vmult(*u, du, dp);
+    // dP = M^-1 (w K dV - a M dV + w R_P + R_U)
     const double      *m = ops.lumped_mass.begin();
     const unsigned int n = dv.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
-      dp.begin()[i] =
-        ops.inverse_lumped_mass.begin()[i] *
-        (w * (k_dv.begin()[i] + r_p.begin()[i]) - a * m[i] * dv.begin()[i] +
-         r_u.begin()[i] + dp.begin()[i]);
+      dp.begin()[i] = ops.inverse_lumped_mass.begin()[i] *
+                      (w * (k_dv.begin()[i] + r_p.begin()[i]) -
+                       a * m[i] * dv.begin()[i] + r_u.begin()[i]);
     for (unsigned int bl = 0; bl < 3; ++bl)
       ops.zero_constrained(dz.block(bl));
-  }
-
-
-
-  template <int dim>
-  void
-  NestedLinearSystems<dim>::add_data_schur_vmult(
-    const NestedMatrices<dim> &matrices,
-    const Vector              &u,
-    const Vector              &x,
-    Vector                    &y) const
-  {
-    if (!physics.has_data_term())
-      return;
-    Vector x_free(x), tmp(x), h_tmp(x);
-    ops.zero_constrained(x_free);
-    // tmp = M^-1 K x, h_tmp = M^-1 H_d tmp, y += K h_tmp
-    matrices.k->vmult(tmp, x_free);
-    tmp.scale(ops.inverse_lumped_mass);
-    h_tmp = 0;
-    physics.add_data_term_hessian_vmult(u, tmp, h_tmp);
-    h_tmp.scale(ops.inverse_lumped_mass);
-    matrices.k->vmult(tmp, h_tmp);
-    ops.zero_constrained(tmp);
-    y += tmp;
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  NestedLinearSystems<dim>::solve_without_area_term(
-    const BlockVector     &z,
-    const BlockVector     &r,
-    BlockVector           &dz,
-    const LinearSolverType type,
-    const double           tolerance,
-    const unsigned int     max_iterations,
-    const double           shift)
-  {
-    NestedMatrices<dim>  local;
-    NestedMatrices<dim> &matrices = storage(local);
-    build_reduced_matrices(z, matrices, type, shift);
-    const Vector &u = z.block(Field::U);
-    Vector        rhs(r.block(Field::V));
-    reduced_rhs(matrices, r, &u, rhs);
-    const std::function<void(Vector &, const Vector &)> add_data_part =
-      [&](Vector &y, const Vector &x) {
-        add_data_schur_vmult(matrices, u, x, y);
-      };
-    Vector      &dv = dz.block(Field::V);
-    unsigned int iterations;
-    if (type == LinearSolverType::direct)
-      {
-        const DirectFactorization s_inverse(matrices.s, 0);
-        iterations = corrected_cg(matrices.s,
-                                  add_data_part,
-                                  s_inverse,
-                                  dv,
-                                  rhs,
-                                  tolerance,
-                                  max_iterations);
-      }
-    else
-      {
-        const SchurPreconditioner s_inverse(*matrices.g,
-                                            ops.lumped_mass,
-                                            &matrices.interface_mode);
-        iterations = corrected_cg(ProductFormMatrix(*matrices.k_hat,
-                                                    matrices.uu_weight,
-                                                    matrices.diagonal,
-                                                    ops.inverse_lumped_mass),
-                                  add_data_part,
-                                  s_inverse,
-                                  dv,
-                                  rhs,
-                                  tolerance,
-                                  max_iterations);
-      }
-    back_substitute(matrices, r, &u, dz);
     return iterations;
   }
 

@@ -211,29 +211,19 @@ namespace PhaseField
         y.block(Field::P).begin()[i] += -m[i] * xu;
       }
     // the data term's Hessian (Gauss-Newton product) matrix-free
-    add_data_term_hessian_vmult(z.block(Field::U),
-                                x.block(Field::U),
-                                y.block(Field::U));
+    if (data_term)
+      {
+        Vector hd(y.block(Field::U));
+        hd = 0;
+        data_term->add_hessian_vmult(z.block(Field::U),
+                                     x.block(Field::U),
+                                     1.,
+                                     hd);
+        zero_fixed_u(hd);
+        y.block(Field::U) += hd;
+      }
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(y.block(b));
-  }
-
-
-
-  template <int dim>
-  void
-  NestedPhysics<dim>::add_data_term_hessian_vmult(const Vector &u,
-                                                  const Vector &d,
-                                                  Vector       &y) const
-  {
-    if (!data_term)
-      return;
-    Vector hd(y);
-    hd = 0;
-    data_term->add_hessian_vmult(u, d, 1., hd);
-    zero_fixed_u(hd);
-    ops.zero_constrained(hd);
-    y += hd;
   }
 
 

@@ -74,8 +74,7 @@ namespace PhaseField
    *   assembled as one sparse matrix (unknowns interleaved, (U_i, V_i,
    *   P_i)) and solved by the direct solver (2D);
    * - with the area term and all U free (the contour problem), flexible
-   *   GMRES on J preconditioned by the elimination without the area term
-   *   (and without a data term).
+   *   GMRES on J preconditioned by the elimination without the area term.
    */
   template <int dim>
   class NestedLinearSystems
@@ -122,37 +121,6 @@ namespace PhaseField
                  Vector       &x,
                  const Vector &rhs) const;
 
-    /**
-     * J0 @p dz = -@p r for the Jacobian J0 at @p z without the area term
-     * but with the data term: UU block w M + H_d, w = 1 + a + @p shift,
-     * H_d the data term's Hessian (NestedPhysics::
-     * add_data_term_hessian_vmult(), positive semi-definite). Since M is
-     * diagonal the elimination of the class documentation holds with w M
-     * replaced by w M + H_d: dV solves
-     *   S' dV = -R_V + a R_P - K M^-1 (w R_P + R_U + H_d M^-1 R_P),
-     *   S' = S + K M^-1 H_d M^-1 K,
-     * then dU = M^-1 (K dV + R_P) and
-     * dP = M^-1 ((w M + H_d) dU - a M dV + R_U). S' is symmetric and
-     * positive definite where S is; it is solved by CG with the
-     * preconditioner S^-1 (the factorisation of S, or the product-form
-     * preconditioner of S for @p type iterative) to the relative
-     * tolerance @p tolerance or @p max_iterations iterations, whichever
-     * comes first. The matrices of @p z and the preconditioner of S are
-     * built here. With @p tolerance at round-off this is J0^-1
-     * (tests/data_term_elimination). Not used as the preconditioner of
-     * solve_area_system(): it cut the GMRES iterations 5-7 times but not
-     * the time (doc/shape_from_contour.md, "The preconditioner with the
-     * data term"). Returns the CG iterations.
-     */
-    unsigned int
-    solve_without_area_term(const BlockVector     &z,
-                            const BlockVector     &r,
-                            BlockVector           &dz,
-                            const LinearSolverType type,
-                            const double           tolerance,
-                            const unsigned int     max_iterations,
-                            const double           shift = 0);
-
   private:
     /**
      * Build K(V) and S at the state @p z, S for the UU block
@@ -172,34 +140,6 @@ namespace PhaseField
                          const BlockVector         &r,
                          BlockVector               &dz,
                          LinearSolver              &solver) const;
-
-    /**
-     * The right-hand side of the eliminated system in V,
-     *   -R_V + a R_P - K M^-1 (w R_P + R_U [+ H_d M^-1 R_P]),
-     * with the data term's part at the state's U @p u if @p u is given.
-     */
-    void
-    reduced_rhs(const NestedMatrices<dim> &matrices,
-                const BlockVector         &r,
-                const Vector              *u,
-                Vector                    &rhs) const;
-
-    /**
-     * dU = M^-1 (K dV + R_P) and dP = M^-1 (w M dU - a M dV + R_U
-     * [+ H_d dU]) from dV in @p dz, with the data term at @p u if given.
-     */
-    void
-    back_substitute(const NestedMatrices<dim> &matrices,
-                    const BlockVector         &r,
-                    const Vector              *u,
-                    BlockVector               &dz) const;
-
-    /** @p y += K M^-1 H_d M^-1 K @p x (zero at constrained DoFs). */
-    void
-    add_data_schur_vmult(const NestedMatrices<dim> &matrices,
-                         const Vector              &u,
-                         const Vector              &x,
-                         Vector                    &y) const;
 
     /**
      * The 3-field Jacobian (UU block shifted by @p shift M) as one sparse
@@ -232,22 +172,18 @@ namespace PhaseField
 
     /**
      * J dZ = -R for the Jacobian with an area term and no fixed U values
-     * (the contour problem): flexible GMRES on J (applied matrix-free,
-     * with the data term's Hessian H_d of the monolithic contour
-     * coupling), preconditioned by the elimination of the Jacobian
-     * without the area term and without H_d, whose UU block is
-     * (1 + a + shift) M. The area term's part of the UU block, tau eta (L
-     * + M[Psi''(U)]/(2 eps^2)), is smaller than (1 + a) M by about eta
-     * ttau^2/h^2 (eta h^2 for ttau = h^2), so a few GMRES iterations
-     * suffice for it, and only the scalar S is factorised instead of the
-     * 3-field matrix. H_d is left to GMRES: 50-250 iterations per Newton
-     * system with the mismatch. The elimination with H_d
-     * (solve_without_area_term(), its S' by inner CG) took 5-7 times
-     * fewer GMRES iterations but more time (2D: 1.3-1.8 times per
-     * regular step, 12 times in the first step of a level; 3D: twice the
-     * user time in the first six steps of level 5;
-     * doc/shape_from_contour.md, "The preconditioner
-     * with the data term"), so it is not used. Returns the GMRES iterations.
+     * (the contour problem): flexible GMRES on J (applied matrix-free),
+     * preconditioned by the elimination of the Jacobian without the area
+     * term, whose UU block is (1 + a + shift) M. The area term's part of
+     * the UU block, tau eta (L + M[Psi''(U)]/(2 eps^2)), is smaller than
+     * (1 + a) M by about eta ttau^2/h^2 (eta h^2 for ttau = h^2), so a few
+     * GMRES iterations suffice, and only the scalar S is factorised
+     * instead of the 3-field matrix. The data term's Hessian H_d of the
+     * monolithic contour coupling is left to GMRES (50-250 iterations per
+     * Newton system); an elimination that holds it (S + K M^-1 H_d M^-1 K
+     * by inner CG, commit 73c3b27) took 5-7 times fewer GMRES iterations
+     * but more time (doc/shape_from_contour.md, "The preconditioner with
+     * the data term"). Returns the GMRES iterations.
      */
     unsigned int
     solve_area_system(const BlockVector &z,

@@ -246,26 +246,6 @@ namespace PhaseField
                             const double  factor,
                             Vector       &y) const;
 
-    /** Does the outer energy have a data term (OuterEnergy::data_term)? */
-    bool
-    has_data_term() const
-    {
-      return data_term != nullptr;
-    }
-
-    /**
-     * @p y += H_d @p d, the Hessian of the data term at @p u applied to
-     * @p d (matrix-free; for the mismatch the Gauss-Newton product with the
-     * majoriser's curvature), zero at constrained DoFs and at those of
-     * OuterEnergy::fixed_u; the values of @p d at constrained DoFs are not
-     * read. Nothing without a data term. The data term's part of the UU
-     * block of apply_jacobian().
-     */
-    void
-    add_data_term_hessian_vmult(const Vector &u,
-                                const Vector &d,
-                                Vector       &y) const;
-
     /**
      * Set @p u_block to 0 at the DoFs of OuterEnergy::fixed_u (a gradient
      * or a direction in U that must leave the fixed values unchanged).
