@@ -82,163 +82,204 @@ namespace PhaseField
 
 
 
-  namespace
-  {
-    /**
-     * Call @p f(index, cell) for every cell of the cell batches
-     * [@p first, @p last) of @p data, with index = batch * width + lane.
-     */
-    template <int dim, typename Number, typename Function>
-    void
-    for_each_cell(const MatrixFree<dim, Number> &data,
-                  const unsigned int             first,
-                  const unsigned int             last,
-                  const Function                &f)
-    {
-      constexpr unsigned int width = VectorizedArray<Number>::size();
-      for (unsigned int batch = first; batch < last; ++batch)
-        for (unsigned int lane = 0;
-             lane < data.n_active_entries_per_cell_batch(batch);
-             ++lane)
-          f(batch * width + lane, batch, lane);
-    }
-
-
-
-    /** Whether the vertices of @p cell are those of an axis-parallel cube. */
-    template <typename CellIterator>
-    bool
-    is_axis_parallel_cube(const CellIterator &cell)
-    {
-      constexpr int dim       = CellIterator::AccessorType::dimension;
-      const auto   &origin    = cell->vertex(0);
-      const double  h         = cell->vertex(1)[0] - origin[0];
-      const double  tolerance = Constants::roundoff * h;
-      for (const unsigned int v : cell->vertex_indices())
-        for (unsigned int d = 0; d < dim; ++d)
-          if (std::abs(cell->vertex(v)[d] - origin[d] - ((v >> d) & 1) * h) >
-              tolerance)
-            return false;
-      return true;
-    }
-  } // namespace
-
-
-
-  template <int dim, typename Number>
-  void
-  reinit_q1_matrix_free(MatrixFree<dim, Number>         &data,
-                        const DoFHandler<dim>           &dof_handler,
-                        const AffineConstraints<double> &constraints,
-                        const unsigned int               mg_level)
-  {
-    typename MatrixFree<dim, Number>::AdditionalData settings;
-    settings.tasks_parallel_scheme =
-      MatrixFree<dim, Number>::AdditionalData::none;
-    settings.mapping_update_flags = update_gradients;
-    settings.mg_level             = mg_level;
-    data.reinit(MappingCartesian<dim>(),
-                dof_handler,
-                constraints,
-                QGauss<1>(1),
-                settings);
-    bool cartesian = true;
-    for_each_cell(data,
-                  0,
-                  data.n_cell_batches(),
-                  [&](unsigned int, unsigned int batch, unsigned int lane) {
-                    cartesian =
-                      cartesian && is_axis_parallel_cube(
-                                     data.get_cell_iterator(batch, lane));
-                  });
-    AssertThrow(Utilities::MPI::min(cartesian ? 1 : 0,
-                                    dof_handler.get_communicator()) == 1,
-                ExcMessage("The matrix-free stiffness operator needs a mesh "
-                           "of axis-parallel cubes."));
-  }
-
-
-
-  template <int dim>
-  Q1LevelCells<dim>::Q1LevelCells(const MatrixFree<dim, float> &data,
-                                  const MGConstrainedDoFs &mg_constrained_dofs,
-                                  const unsigned int       level)
-  {
-    constexpr unsigned int n           = Q1CellStiffness<dim, float>::n;
-    constexpr unsigned int width       = VectorizedArray<float>::size();
-    const auto            &partitioner = *data.get_vector_partitioner();
-    const bool boundary = mg_constrained_dofs.have_boundary_indices();
-    dofs.assign(data.n_cell_batches() * width * n,
-                numbers::invalid_unsigned_int);
-    std::vector<types::global_dof_index> indices(n);
-    double                               edge      = 0;
-    bool                                 same_edge = true;
-    for_each_cell(
-      data,
-      0,
-      data.n_cell_batches(),
-      [&](const unsigned int index, unsigned int batch, unsigned int lane) {
-        const auto cell = data.get_cell_iterator(batch, lane);
-        cell->get_mg_dof_indices(indices);
-        for (unsigned int i = 0; i < n; ++i)
-          if (!boundary ||
-              !mg_constrained_dofs.is_boundary_index(level, indices[i]))
-            dofs[index * n + i] = partitioner.global_to_local(indices[i]);
-        const double h = cell->vertex(1)[0] - cell->vertex(0)[0];
-        if (edge == 0)
-          edge = h;
-        same_edge = same_edge && std::abs(h - edge) <= Constants::roundoff * h;
-      });
-    AssertThrow(same_edge,
-                ExcMessage("The cells of a multigrid level must be cubes of "
-                           "one size (a mesh refined from one coarse cube)."));
-    scale = std::pow(edge, dim - 2);
-  }
-
-
-
   template <int dim>
   std::size_t
-  Q1LevelCells<dim>::memory_consumption() const
+  MultigridLevel<dim>::memory_consumption() const
   {
-    return dofs.capacity() * sizeof(unsigned int);
+    return cells.memory_consumption() +
+           (boundary_dofs.capacity() + edge_dofs.capacity()) *
+             sizeof(unsigned int) +
+           lumped_mass.memory_consumption() +
+           stiffness_diagonal.memory_consumption();
   }
 
 
 
   template <int dim>
   void
-  LevelStiffness<dim>::set_coefficients(
-    const double                       f,
-    const Q1CellStiffness<dim, float> &kernel,
-    const Q1LevelCells<dim>           &level_cells,
-    const LevelVector                 &l_diagonal,
-    const LevelVector                 &d)
+  LevelStiffness<dim>::initialize(const MultigridLevel<dim>         &l,
+                                  const Q1CellStiffness<dim, float> &kernel,
+                                  const double                       f,
+                                  const LevelVector                 &d)
   {
-    factor             = f;
-    cell_stiffness     = &kernel;
-    cells              = &level_cells;
-    stiffness_diagonal = &l_diagonal;
-    diagonal           = &d;
-    compute_diagonal();
-  }
-
-
-
-  template <int dim>
-  void
-  LevelStiffness<dim>::compute_diagonal()
-  {
-    this->inverse_diagonal_entries =
-      std::make_shared<DiagonalMatrix<LevelVector>>();
-    LevelVector &inverse = this->inverse_diagonal_entries->get_vector();
-    this->data->initialize_dof_vector(inverse);
+    level                = &l;
+    cell_stiffness       = &kernel;
+    factor               = f;
+    diagonal             = &d;
+    inverse_diagonal     = std::make_shared<DiagonalMatrix<LevelVector>>();
+    LevelVector &inverse = inverse_diagonal->get_vector();
+    initialize_dof_vector(inverse);
     const unsigned int n = inverse.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       inverse.local_element(i) =
-        1.f / (factor * stiffness_diagonal->local_element(i) +
+        1.f / (factor * level->stiffness_diagonal.local_element(i) +
                diagonal->local_element(i));
-    this->set_constrained_entries_to_one(inverse);
+    for (const unsigned int i : level->boundary_dofs)
+      inverse.local_element(i) = 1.f;
+    for (const unsigned int i : level->edge_dofs)
+      inverse.local_element(i) = 1.f;
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::vmult(LevelVector &dst, const LevelVector &src) const
+  {
+    adjust_layout(dst);
+    dst = 0.f;
+    vmult_add(dst, src);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::vmult_add(LevelVector &dst, const LevelVector &src) const
+  {
+    adjust_layout(src);
+    adjust_layout(dst);
+    // the edge values of src are read as zero; edge and boundary rows are
+    // the identity
+    auto              &source = const_cast<LevelVector &>(src);
+    std::vector<float> edge_src, edge_dst;
+    for (const unsigned int i : level->edge_dofs)
+      {
+        edge_src.push_back(source.local_element(i));
+        edge_dst.push_back(dst.local_element(i));
+        source.local_element(i) = 0.f;
+      }
+    apply_add(dst, src);
+    for (const unsigned int i : level->boundary_dofs)
+      dst.local_element(i) += src.local_element(i);
+    for (unsigned int k = 0; k < level->edge_dofs.size(); ++k)
+      {
+        const unsigned int i    = level->edge_dofs[k];
+        source.local_element(i) = edge_src[k];
+        dst.local_element(i)    = edge_dst[k] + edge_src[k];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::Tvmult(LevelVector &dst, const LevelVector &src) const
+  {
+    vmult(dst, src);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::Tvmult_add(LevelVector       &dst,
+                                  const LevelVector &src) const
+  {
+    vmult_add(dst, src);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::vmult_interface_down(LevelVector       &dst,
+                                            const LevelVector &src) const
+  {
+    adjust_layout(src);
+    adjust_layout(dst);
+    dst = 0.f;
+    if (!level->any_edge)
+      return;
+    // the columns off the edge, then only the rows on the edge
+    auto              &source = const_cast<LevelVector &>(src);
+    std::vector<float> edge_src;
+    for (const unsigned int i : level->edge_dofs)
+      {
+        edge_src.push_back(source.local_element(i));
+        source.local_element(i) = 0.f;
+      }
+    apply_add(dst, src);
+    std::vector<float> edge_dst;
+    for (const unsigned int i : level->edge_dofs)
+      edge_dst.push_back(dst.local_element(i));
+    dst = 0.f;
+    for (unsigned int k = 0; k < level->edge_dofs.size(); ++k)
+      {
+        const unsigned int i    = level->edge_dofs[k];
+        dst.local_element(i)    = edge_dst[k];
+        source.local_element(i) = edge_src[k];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::vmult_interface_up(LevelVector       &dst,
+                                          const LevelVector &src) const
+  {
+    adjust_layout(src);
+    adjust_layout(dst);
+    dst = 0.f;
+    if (!level->any_edge)
+      return;
+    // the columns on the edge, then only the rows off the edge
+    LevelVector edge_only;
+    initialize_dof_vector(edge_only);
+    for (const unsigned int i : level->edge_dofs)
+      edge_only.local_element(i) = src.local_element(i);
+    apply_add(dst, edge_only);
+    for (const unsigned int i : level->edge_dofs)
+      dst.local_element(i) = 0.f;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  LevelStiffness<dim>::m() const
+  {
+    return level->cells.partitioner->size();
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  LevelStiffness<dim>::n() const
+  {
+    return m();
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::initialize_dof_vector(LevelVector &vector) const
+  {
+    vector.reinit(level->cells.partitioner);
+  }
+
+
+
+  template <int dim>
+  float
+  LevelStiffness<dim>::el(const types::global_dof_index row,
+                          const types::global_dof_index column) const
+  {
+    AssertThrow(row == column,
+                ExcMessage("LevelStiffness gives its diagonal entries only."));
+    return 1.f / inverse_diagonal->get_vector()(row);
+  }
+
+
+
+  template <int dim>
+  const std::shared_ptr<DiagonalMatrix<LevelVector>> &
+  LevelStiffness<dim>::get_matrix_diagonal_inverse() const
+  {
+    return inverse_diagonal;
   }
 
 
@@ -247,7 +288,7 @@ namespace PhaseField
   void
   LevelStiffness<dim>::apply_add(LevelVector &dst, const LevelVector &src) const
   {
-    this->data->cell_loop(&LevelStiffness::local_apply, this, dst, src);
+    level->cells.apply_add(*cell_stiffness, factor, src, dst);
     const unsigned int n = dst.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       dst.local_element(i) += diagonal->local_element(i) * src.local_element(i);
@@ -257,29 +298,43 @@ namespace PhaseField
 
   template <int dim>
   void
-  LevelStiffness<dim>::local_apply(
-    const MatrixFree<dim, float>                &data,
-    LevelVector                                 &dst,
-    const LevelVector                           &src,
-    const std::pair<unsigned int, unsigned int> &cell_range) const
+  LevelStiffness<dim>::adjust_layout(const LevelVector &vector) const
   {
-    constexpr unsigned int n     = Q1CellStiffness<dim, float>::n;
-    constexpr unsigned int none  = numbers::invalid_unsigned_int;
-    const float            scale = factor * cells->scale;
-    for_each_cell(data,
-                  cell_range.first,
-                  cell_range.second,
-                  [&](const unsigned int cell, unsigned int, unsigned int) {
-                    const unsigned int *dofs = cells->dofs.data() + cell * n;
-                    float               values[n];
-                    for (unsigned int i = 0; i < n; ++i)
-                      values[i] =
-                        dofs[i] == none ? 0.f : src.local_element(dofs[i]);
-                    cell_stiffness->apply(values, scale);
-                    for (unsigned int i = 0; i < n; ++i)
-                      if (dofs[i] != none)
-                        dst.local_element(dofs[i]) += values[i];
-                  });
+    if (vector.get_partitioner().get() == level->cells.partitioner.get())
+      return;
+    AssertDimension(vector.locally_owned_size(),
+                    level->cells.partitioner->locally_owned_size());
+    const LevelVector copy(vector);
+    auto             &adjusted = const_cast<LevelVector &>(vector);
+    initialize_dof_vector(adjusted);
+    adjusted.copy_locally_owned_data_from(copy);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelInterface<dim>::initialize(const LevelStiffness<dim> &op)
+  {
+    level_operator = &op;
+  }
+
+
+
+  template <int dim>
+  void
+  LevelInterface<dim>::vmult(LevelVector &dst, const LevelVector &src) const
+  {
+    level_operator->vmult_interface_down(dst, src);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelInterface<dim>::Tvmult(LevelVector &dst, const LevelVector &src) const
+  {
+    level_operator->vmult_interface_up(dst, src);
   }
 
 
@@ -304,18 +359,16 @@ namespace PhaseField
                                                            boundary);
       }
     levels.resize(0, n_levels - 1);
-    cells.resize(0, n_levels - 1);
-    lumped_mass.resize(0, n_levels - 1);
-    stiffness_diagonal.resize(0, n_levels - 1);
+    std::vector<std::shared_ptr<const Utilities::MPI::Partitioner>>
+      partitioners;
     for (unsigned int level = 0; level < n_levels; ++level)
       {
-        levels[level] = make_level(level);
-        cells[level] =
-          Q1LevelCells<dim>(*levels[level], mg_constrained_dofs, level);
+        set_up_cells(level);
         compute_level_vectors(level, stiffness_rule(stiffness_quadrature));
+        partitioners.push_back(levels[level].cells.partitioner);
       }
     transfer.initialize_constraints(mg_constrained_dofs);
-    transfer.build(dof_handler);
+    transfer.build(dof_handler, partitioners);
   }
 
 
@@ -327,30 +380,40 @@ namespace PhaseField
     std::size_t bytes = transfer.memory_consumption();
     for (unsigned int level = levels.min_level(); level <= levels.max_level();
          ++level)
-      bytes += levels[level]->memory_consumption() +
-               cells[level].memory_consumption() +
-               lumped_mass[level].memory_consumption() +
-               stiffness_diagonal[level].memory_consumption();
+      bytes += levels[level].memory_consumption();
     return bytes;
   }
 
 
 
   template <int dim>
-  std::shared_ptr<const MatrixFree<dim, float>>
-  MultigridHierarchy<dim>::make_level(const unsigned int level) const
+  void
+  MultigridHierarchy<dim>::set_up_cells(const unsigned int level)
   {
-    IndexSet relevant;
+    const IndexSet &owned = dof_handler.locally_owned_mg_dofs(level);
+    IndexSet        relevant;
     DoFTools::extract_locally_relevant_level_dofs(dof_handler, level, relevant);
     AffineConstraints<double> level_constraints;
     level_constraints.reinit(relevant);
+    MultigridLevel<dim> &data = levels[level];
     if (mg_constrained_dofs.have_boundary_indices())
-      level_constraints.add_lines(
-        mg_constrained_dofs.get_boundary_indices(level));
+      {
+        const IndexSet &boundary =
+          mg_constrained_dofs.get_boundary_indices(level);
+        level_constraints.add_lines(boundary);
+        for (const types::global_dof_index i : boundary)
+          if (owned.is_element(i))
+            data.boundary_dofs.push_back(owned.index_within_set(i));
+      }
     level_constraints.close();
-    auto level_data = std::make_shared<MatrixFree<dim, float>>();
-    reinit_q1_matrix_free(*level_data, dof_handler, level_constraints, level);
-    return level_data;
+    data.cells = Q1Cells<dim>(dof_handler, level_constraints, level);
+    for (const types::global_dof_index i :
+         mg_constrained_dofs.get_refinement_edge_indices(level))
+      if (owned.is_element(i))
+        data.edge_dofs.push_back(owned.index_within_set(i));
+    data.any_edge =
+      Utilities::MPI::max(static_cast<unsigned int>(data.edge_dofs.size()),
+                          dof_handler.get_communicator()) > 0;
   }
 
 
@@ -361,9 +424,9 @@ namespace PhaseField
     const unsigned int   level,
     const Quadrature<1> &stiffness_rule)
   {
-    const MatrixFree<dim, float> &data = *levels[level];
-    data.initialize_dof_vector(lumped_mass[level]);
-    data.initialize_dof_vector(stiffness_diagonal[level]);
+    MultigridLevel<dim> &data = levels[level];
+    data.lumped_mass.reinit(data.cells.partitioner);
+    data.stiffness_diagonal.reinit(data.cells.partitioner);
     FEValues<dim>                        fe_values(dof_handler.get_fe(),
                             Quadrature<dim>(stiffness_rule),
                             update_gradients | update_JxW_values);
@@ -379,12 +442,12 @@ namespace PhaseField
           const double vertex_mass = cell->measure() / indices.size();
           for (unsigned int i = 0; i < indices.size(); ++i)
             {
-              stiffness_diagonal[level](indices[i]) += cell_matrix(i, i);
-              lumped_mass[level](indices[i]) += vertex_mass;
+              data.stiffness_diagonal(indices[i]) += cell_matrix(i, i);
+              data.lumped_mass(indices[i]) += vertex_mass;
             }
         }
-    lumped_mass[level].compress(VectorOperation::add);
-    stiffness_diagonal[level].compress(VectorOperation::add);
+    data.lumped_mass.compress(VectorOperation::add);
+    data.stiffness_diagonal.compress(VectorOperation::add);
   }
 
 
@@ -437,20 +500,19 @@ namespace PhaseField
                                                                    max_level);
     for (unsigned int level = 0; level <= max_level; ++level)
       {
-        level_diagonal[level].reinit(hierarchy.lumped_mass[level]);
+        level_diagonal[level].reinit(hierarchy.levels[level].lumped_mass);
         const unsigned int n = level_diagonal[level].locally_owned_size();
         for (unsigned int i = 0; i < n; ++i)
           level_diagonal[level].local_element(i) =
-            hierarchy.lumped_mass[level].local_element(i) *
+            hierarchy.levels[level].lumped_mass.local_element(i) *
             level_coefficient[level].local_element(i);
+        // the Dirichlet rows of the level operators are the identity
+        for (const unsigned int i : hierarchy.levels[level].boundary_dofs)
+          level_diagonal[level].local_element(i) = 0.f;
         operators[level].initialize(hierarchy.levels[level],
-                                    hierarchy.mg_constrained_dofs,
-                                    level);
-        operators[level].set_coefficients(factor,
-                                          hierarchy.cell_stiffness,
-                                          hierarchy.cells[level],
-                                          hierarchy.stiffness_diagonal[level],
-                                          level_diagonal[level]);
+                                    hierarchy.cell_stiffness,
+                                    factor,
+                                    level_diagonal[level]);
         interface_operators[level].initialize(operators[level]);
 
         auto &data          = smoother_data[level];
@@ -477,13 +539,13 @@ namespace PhaseField
   void
   GeometricMultigrid<dim>::average_to_coarser(const unsigned int level)
   {
-    const LevelVector &mass = hierarchy.lumped_mass[level];
+    const LevelVector &mass = hierarchy.levels[level].lumped_mass;
     LevelVector        weighted(mass);
     for (unsigned int i = 0; i < weighted.locally_owned_size(); ++i)
       weighted.local_element(i) *= level_coefficient[level].local_element(i);
     LevelVector sum, weight;
-    sum.reinit(hierarchy.lumped_mass[level - 1]);
-    weight.reinit(hierarchy.lumped_mass[level - 1]);
+    sum.reinit(hierarchy.levels[level - 1].lumped_mass);
+    weight.reinit(hierarchy.levels[level - 1].lumped_mass);
     hierarchy.transfer.restrict_and_add(level, sum, weighted);
     hierarchy.transfer.restrict_and_add(level, weight, mass);
     LevelVector &coarse = level_coefficient[level - 1];
@@ -518,20 +580,12 @@ namespace PhaseField
   cell_stiffness_matrix(FEValues<3> &,
                         const DoFHandler<3>::active_cell_iterator &,
                         FullMatrix<double> &);
-  template void
-  reinit_q1_matrix_free(MatrixFree<2, double> &,
-                        const DoFHandler<2> &,
-                        const AffineConstraints<double> &,
-                        unsigned int);
-  template void
-  reinit_q1_matrix_free(MatrixFree<3, double> &,
-                        const DoFHandler<3> &,
-                        const AffineConstraints<double> &,
-                        unsigned int);
-  template struct Q1LevelCells<2>;
-  template struct Q1LevelCells<3>;
+  template struct MultigridLevel<2>;
+  template struct MultigridLevel<3>;
   template class LevelStiffness<2>;
   template class LevelStiffness<3>;
+  template class LevelInterface<2>;
+  template class LevelInterface<3>;
   template class MultigridHierarchy<2>;
   template class MultigridHierarchy<3>;
   template class GeometricMultigrid<2>;

@@ -1,7 +1,6 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/matrix_free/fe_evaluation.h>
 #include <map>
 #include <phasefield/mesh/matrix_free_stiffness.h>
 #include <phasefield/mesh/shifted_product.h>
@@ -23,11 +22,11 @@ namespace PhaseField
     lumped_mass = &mass;
     settings    = s;
 
-    reinit_q1_matrix_free(matrix_free, dofs, c);
+    cells          = Q1Cells<dim>(dofs, c);
     cell_stiffness = std::make_unique<const Q1CellStiffness<dim, double>>(
       stiffness_rule(settings.stiffness_quadrature));
-    matrix_free.initialize_dof_vector(src_fine);
-    matrix_free.initialize_dof_vector(dst_fine);
+    src_fine.reinit(cells.partitioner);
+    dst_fine.reinit(cells.partitioner);
     compute_constrained_diagonal();
   }
 
@@ -37,7 +36,7 @@ namespace PhaseField
   std::size_t
   MatrixFreeStiffness<dim>::memory_consumption() const
   {
-    return matrix_free.memory_consumption() + src_fine.memory_consumption() +
+    return cells.memory_consumption() + src_fine.memory_consumption() +
            dst_fine.memory_consumption() +
            constrained_diagonal.capacity() *
              sizeof(std::pair<unsigned int, double>) +
@@ -60,7 +59,7 @@ namespace PhaseField
   MatrixFreeStiffness<dim>::clear()
   {
     hierarchy.reset();
-    matrix_free.clear();
+    cells = Q1Cells<dim>();
     src_fine.reinit(0);
     dst_fine.reinit(0);
     std::vector<std::pair<unsigned int, double>>().swap(constrained_diagonal);
@@ -80,8 +79,7 @@ namespace PhaseField
     const unsigned int n = dof_handler->get_fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> indices(n);
     FullMatrix<double>                   cell_matrix;
-    FineVector                           diagonal;
-    matrix_free.initialize_dof_vector(diagonal);
+    FineVector                           diagonal(cells.partitioner);
     // the weights of every unconstrained DoF j in the cell's shape
     // functions: (C^T A C)_jj = w_j^T A w_j
     std::map<types::global_dof_index, dealii::Vector<double>> weights;
@@ -135,30 +133,10 @@ namespace PhaseField
 
   template <int dim>
   void
-  MatrixFreeStiffness<dim>::local_apply(
-    const MatrixFree<dim, double>               &data,
-    FineVector                                  &dst,
-    const FineVector                            &src,
-    const std::pair<unsigned int, unsigned int> &cell_range) const
-  {
-    Q1Evaluation<dim, double> phi(data);
-    for (unsigned int cell = cell_range.first; cell < cell_range.second; ++cell)
-      {
-        phi.reinit(cell);
-        phi.read_dof_values(src);
-        cell_stiffness->apply(phi, 1.);
-        phi.distribute_local_to_global(dst);
-      }
-  }
-
-
-
-  template <int dim>
-  void
   MatrixFreeStiffness<dim>::vmult(FineVector &dst, const FineVector &src) const
   {
-    matrix_free.cell_loop(
-      &MatrixFreeStiffness::local_apply, this, dst, src, true);
+    dst = 0.;
+    cells.apply_add(*cell_stiffness, 1., src, dst);
     for (const auto &[i, a_ii] : constrained_diagonal)
       dst.local_element(i) = a_ii * src.local_element(i);
   }
@@ -217,8 +195,7 @@ namespace PhaseField
                                                   settings.stiffness_quadrature,
                                                   settings.dirichlet);
     // the nodal coefficient c of D = M[c], interpolated at hanging nodes
-    FineVector coefficient;
-    matrix_free.initialize_dof_vector(coefficient);
+    FineVector         coefficient(cells.partitioner);
     const unsigned int n = coefficient.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {

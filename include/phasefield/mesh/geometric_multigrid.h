@@ -4,11 +4,10 @@
 #include <deal.II/base/mg_level_object.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
-#include <deal.II/matrix_free/matrix_free.h>
-#include <deal.II/matrix_free/operators.h>
 #include <deal.II/multigrid/mg_coarse.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 #include <deal.II/multigrid/mg_matrix.h>
@@ -19,6 +18,7 @@
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/q1_cell_stiffness.h>
+#include <phasefield/mesh/q1_cells.h>
 #include <phasefield/mesh/stiffness_operator.h>
 
 namespace PhaseField
@@ -38,26 +38,6 @@ namespace PhaseField
   stiffness_rule(const StiffnessQuadrature stiffness_quadrature);
 
   /**
-   * Set up @p data for the Q1CellStiffness kernel on the active cells of
-   * @p dof_handler with @p constraints, or on the cells of level
-   * @p mg_level: the DoF indices and each cell's Jacobian, from which the
-   * kernel reads the cell's edge, and nothing else. The kernel evaluates
-   * nothing at quadrature points, so one point per cell and MappingCartesian
-   * suffice: with MappingQ1 and two 2-point rules, the setup's transient heap
-   * on the level-7 sphere (2 ranks, 983k cells) was 1010 MiB instead of 650
-   * (mallinfo2 before and after; most of the rest is deal.II's hanging-node
-   * setup in 3D, which 9.4 does not let one switch off). Throws unless every
-   * cell is an axis-parallel cube.
-   */
-  template <int dim, typename Number>
-  void
-  reinit_q1_matrix_free(
-    dealii::MatrixFree<dim, Number>         &data,
-    const dealii::DoFHandler<dim>           &dof_handler,
-    const dealii::AffineConstraints<double> &constraints,
-    const unsigned int mg_level = dealii::numbers::invalid_unsigned_int);
-
-  /**
    * @p cell_matrix = the stiffness matrix of @p cell (an active or a level
    * cell), integrated with the rule of @p fe_values.
    */
@@ -67,38 +47,28 @@ namespace PhaseField
                         const CellIterator         &cell,
                         dealii::FullMatrix<double> &cell_matrix);
 
+
+
   /**
-   * The cells of one multigrid level as the Q1 kernel reads them, in the
-   * order of the cells of the level's matrix-free object (batches, then
-   * lanes): per cell its 2^dim DoFs as local indices of the level's
-   * vectors, numbers::invalid_unsigned_int for a DoF on the Dirichlet
-   * boundary (read as zero and not written, as FEEvaluation does with the
-   * level constraints), and the factor h^(dim-2) of the level's cells (all
-   * of one edge h). LevelStiffness gathers and scatters through these 32
-   * bytes per cell (3D) instead of
-   * FEEvaluation, whose generic gather and scatter took most of the time of
-   * the level products (doc/scaling.md, "The matrix-free backend").
+   * What one level of the mesh hierarchy (local smoothing) holds for the
+   * cycles: its cells, its locally owned DoFs on the Dirichlet boundary and
+   * on the refinement edge (as local indices), its lumped mass and the
+   * diagonal of its stiffness operator L_l.
    */
   template <int dim>
-  struct Q1LevelCells
+  struct MultigridLevel
   {
-    Q1LevelCells() = default;
-
-    /**
-     * The cells of @p data, a matrix-free object of level @p level, with the
-     * boundary DoFs of @p mg_constrained_dofs. Throws unless all cells have
-     * one edge.
-     */
-    Q1LevelCells(const dealii::MatrixFree<dim, float> &data,
-                 const dealii::MGConstrainedDoFs      &mg_constrained_dofs,
-                 const unsigned int                    level);
+    Q1Cells<dim>              cells;
+    std::vector<unsigned int> boundary_dofs;
+    std::vector<unsigned int> edge_dofs;
+    /** Whether the level has a refinement edge on any rank. */
+    bool        any_edge = false;
+    LevelVector lumped_mass;
+    LevelVector stiffness_diagonal;
 
     /** Bytes of this rank. */
     std::size_t
     memory_consumption() const;
-
-    std::vector<unsigned int> dofs;
-    float                     scale = 0;
   };
 
 
@@ -107,46 +77,114 @@ namespace PhaseField
    * f L_l + D_l on level l of the mesh hierarchy (local smoothing): the
    * stiffness operator of the level's cells times a number f plus a
    * diagonal D_l, the level's lumped mass times the nodal coefficient
-   * interpolated from the active mesh. The refinement edge of the level is
-   * a homogeneous Dirichlet boundary (MatrixFreeOperators::Base).
+   * interpolated from the active mesh. The Dirichlet DoFs and the
+   * refinement edge of the level are a homogeneous Dirichlet boundary: the
+   * operator is the identity there, and the coupling of the edge to the
+   * interior is the interface operator (vmult_interface_down/up), as in
+   * deal.II's MatrixFreeOperators::Base, whose semantics this class
+   * follows without a MatrixFree object.
    */
   template <int dim>
-  class LevelStiffness
-    : public dealii::MatrixFreeOperators::Base<dim, LevelVector>
+  class LevelStiffness : public dealii::Subscriptor
   {
   public:
+    using value_type = float;
+
     /**
-     * The operator @p factor L_l + diag(@p diagonal), with the cell matrices
-     * of @p cell_stiffness on the cells @p cells, whose diagonal without the
-     * shift is @p stiffness_diagonal (diag L_l); all four must outlive this
-     * object. Computes the inverse diagonal that the smoother uses.
+     * The operator @p factor L_l + diag(@p diagonal) on @p level, with the
+     * cell matrix @p cell_stiffness; all three must outlive this object.
+     * Computes the inverse diagonal that the smoother uses.
      */
     void
-    set_coefficients(const double                       factor,
-                     const Q1CellStiffness<dim, float> &cell_stiffness,
-                     const Q1LevelCells<dim>           &cells,
-                     const LevelVector                 &stiffness_diagonal,
-                     const LevelVector                 &diagonal);
+    initialize(const MultigridLevel<dim>         &level,
+               const Q1CellStiffness<dim, float> &cell_stiffness,
+               const double                       factor,
+               const LevelVector                 &diagonal);
 
     void
-    compute_diagonal() override;
+    vmult(LevelVector &dst, const LevelVector &src) const;
+
+    void
+    vmult_add(LevelVector &dst, const LevelVector &src) const;
+
+    /** The operator is symmetric: Tvmult() is vmult(). */
+    void
+    Tvmult(LevelVector &dst, const LevelVector &src) const;
+
+    void
+    Tvmult_add(LevelVector &dst, const LevelVector &src) const;
+
+    /** @p dst = the rows off the edge of the columns on the edge. */
+    void
+    vmult_interface_down(LevelVector &dst, const LevelVector &src) const;
+
+    /** @p dst = the transpose of vmult_interface_down(). */
+    void
+    vmult_interface_up(LevelVector &dst, const LevelVector &src) const;
+
+    dealii::types::global_dof_index
+    m() const;
+
+    dealii::types::global_dof_index
+    n() const;
+
+    void
+    initialize_dof_vector(LevelVector &vector) const;
+
+    /** The diagonal entry of row @p row = @p column (a global index). */
+    float
+    el(const dealii::types::global_dof_index row,
+       const dealii::types::global_dof_index column) const;
+
+    /** The inverse of the diagonal, 1 on the boundary and the edge. */
+    const std::shared_ptr<dealii::DiagonalMatrix<LevelVector>> &
+    get_matrix_diagonal_inverse() const;
 
   private:
+    /**
+     * @p dst += (f L_l + D_l) @p src with the boundary and edge entries of
+     * @p src read as zero; the boundary and edge rows of @p dst are not
+     * meaningful.
+     */
     void
-    apply_add(LevelVector &dst, const LevelVector &src) const override;
+    apply_add(LevelVector &dst, const LevelVector &src) const;
 
-    /** f times the stiffness integral on the cells of @p cell_range. */
+    /**
+     * Give @p vector the layout of the level's cells if it has another one
+     * (a vector of the transfer), keeping its owned values.
+     */
     void
-    local_apply(const dealii::MatrixFree<dim, float>        &data,
-                LevelVector                                 &dst,
-                const LevelVector                           &src,
-                const std::pair<unsigned int, unsigned int> &cell_range) const;
+    adjust_layout(const LevelVector &vector) const;
 
-    float                              factor             = 0;
-    const Q1CellStiffness<dim, float> *cell_stiffness     = nullptr;
-    const Q1LevelCells<dim>           *cells              = nullptr;
-    const LevelVector                 *stiffness_diagonal = nullptr;
-    const LevelVector                 *diagonal           = nullptr;
+    const MultigridLevel<dim>         *level          = nullptr;
+    const Q1CellStiffness<dim, float> *cell_stiffness = nullptr;
+    float                              factor         = 0;
+    const LevelVector                 *diagonal       = nullptr;
+    std::shared_ptr<dealii::DiagonalMatrix<LevelVector>> inverse_diagonal;
+  };
+
+
+
+  /**
+   * The coupling of the refinement edge to the interior of a level
+   * (MGInterfaceOperator without a MatrixFree object): vmult() is
+   * LevelStiffness::vmult_interface_down(), Tvmult() vmult_interface_up().
+   */
+  template <int dim>
+  class LevelInterface : public dealii::Subscriptor
+  {
+  public:
+    void
+    initialize(const LevelStiffness<dim> &level_operator);
+
+    void
+    vmult(LevelVector &dst, const LevelVector &src) const;
+
+    void
+    Tvmult(LevelVector &dst, const LevelVector &src) const;
+
+  private:
+    const LevelStiffness<dim> *level_operator = nullptr;
   };
 
 
@@ -154,10 +192,9 @@ namespace PhaseField
   /**
    * What the geometric multigrid cycles of one mesh share, whatever the
    * operator f L + D: the level DoFs (local smoothing on the refinement
-   * levels of the active mesh), the transfer between levels, one
-   * matrix-free object per level, and per level the lumped mass and the
-   * diagonal of L_l. Built once per mesh, on the first cycle
-   * (MatrixFreeStiffness).
+   * levels of the active mesh), the transfer between levels and the data
+   * of each level (MultigridLevel). Built once per mesh, on the first
+   * cycle (MatrixFreeStiffness).
    */
   template <int dim>
   class MultigridHierarchy
@@ -177,21 +214,17 @@ namespace PhaseField
     std::size_t
     memory_consumption() const;
 
-    const dealii::DoFHandler<dim>           &dof_handler;
-    dealii::MGConstrainedDoFs                mg_constrained_dofs;
-    dealii::MGTransferMatrixFree<dim, float> transfer;
-    dealii::MGLevelObject<std::shared_ptr<const dealii::MatrixFree<dim, float>>>
-                                             levels;
-    dealii::MGLevelObject<Q1LevelCells<dim>> cells;
-    dealii::MGLevelObject<LevelVector>       lumped_mass;
-    dealii::MGLevelObject<LevelVector>       stiffness_diagonal;
+    const dealii::DoFHandler<dim>             &dof_handler;
+    dealii::MGConstrainedDoFs                  mg_constrained_dofs;
+    dealii::MGTransferMatrixFree<dim, float>   transfer;
+    dealii::MGLevelObject<MultigridLevel<dim>> levels;
     /** The cell matrix of every level (the stiffness rule). */
     const Q1CellStiffness<dim, float> cell_stiffness;
 
   private:
-    /** The matrix-free object of @p level. */
-    std::shared_ptr<const dealii::MatrixFree<dim, float>>
-    make_level(const unsigned int level) const;
+    /** The cells and the boundary and edge DoFs of @p level. */
+    void
+    set_up_cells(const unsigned int level);
 
     /**
      * lumped_mass and stiffness_diagonal on @p level, the latter with the
@@ -262,13 +295,11 @@ namespace PhaseField
     void
     average_to_coarser(const unsigned int level);
 
-    const MultigridHierarchy<dim>             &hierarchy;
-    dealii::MGLevelObject<LevelVector>         level_coefficient;
-    dealii::MGLevelObject<LevelVector>         level_diagonal;
-    dealii::MGLevelObject<LevelStiffness<dim>> operators;
-    dealii::MGLevelObject<
-      dealii::MatrixFreeOperators::MGInterfaceOperator<LevelStiffness<dim>>>
-                                                          interface_operators;
+    const MultigridHierarchy<dim>                        &hierarchy;
+    dealii::MGLevelObject<LevelVector>                    level_coefficient;
+    dealii::MGLevelObject<LevelVector>                    level_diagonal;
+    dealii::MGLevelObject<LevelStiffness<dim>>            operators;
+    dealii::MGLevelObject<LevelInterface<dim>>            interface_operators;
     dealii::mg::Matrix<LevelVector>                       mg_matrix;
     dealii::mg::Matrix<LevelVector>                       mg_interface;
     dealii::mg::SmootherRelaxation<Smoother, LevelVector> smoother;

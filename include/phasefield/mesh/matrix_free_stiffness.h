@@ -3,11 +3,11 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/matrix_free/matrix_free.h>
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/geometric_multigrid.h>
+#include <phasefield/mesh/q1_cells.h>
 #include <phasefield/mesh/stiffness_operator.h>
 #include <utility>
 #include <vector>
@@ -15,17 +15,17 @@
 namespace PhaseField
 {
   /**
-   * The stiffness operator L applied cell by cell without a matrix
-   * (deal.II's MatrixFree and FEEvaluation, as in step-37): the
+   * The stiffness operator L applied cell by cell without a matrix (as in
+   * deal.II's step-37, with the Q1 cube kernel Q1CellStiffness on the
+   * cell table Q1Cells instead of MatrixFree and FEEvaluation): the
    * matrix-free backend of the operator seam. It applies the same operator
    * as TrilinosStiffness, the Q1 Laplacian condensed with the constraints:
    * on unconstrained rows C^T A C, on a constrained row only the diagonal
    * entry that AffineConstraints::distribute_local_to_global() puts there
    * (the sum of |a_ii| over the cells of the DoF). Its shifted operators
    * f L + D are MatrixFreeShiftedStiffness, preconditioned by
-   * GeometricMultigrid. What it keeps per DoF: the cell data of MatrixFree
-   * (DoF indices and one Jacobian per cell on Cartesian cells) and two
-   * vectors; no matrix.
+   * GeometricMultigrid. What it keeps per DoF: the cell table (DoF indices
+   * and the level of each cell) and two vectors; no matrix.
    */
   template <int dim>
   class MatrixFreeStiffness : public StiffnessOperator
@@ -90,13 +90,6 @@ namespace PhaseField
     vmult(FineVector &dst, const FineVector &src) const;
 
   private:
-    /** The stiffness integral on the cells of @p cell_range. */
-    void
-    local_apply(const dealii::MatrixFree<dim, double>       &data,
-                FineVector                                  &dst,
-                const FineVector                            &src,
-                const std::pair<unsigned int, unsigned int> &cell_range) const;
-
     /**
      * The diagonal of the assembled matrix, cell by cell: w_j^T A_K w_j on
      * an unconstrained row j, with w_j the weights of j in the cell's shape
@@ -112,7 +105,7 @@ namespace PhaseField
     void
     compute_constrained_diagonal();
 
-    dealii::MatrixFree<dim, double>                     matrix_free;
+    Q1Cells<dim>                                        cells;
     std::unique_ptr<const Q1CellStiffness<dim, double>> cell_stiffness;
     const dealii::DoFHandler<dim>                      *dof_handler = nullptr;
     const dealii::AffineConstraints<double>            *constraints = nullptr;

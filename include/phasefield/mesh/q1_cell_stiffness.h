@@ -5,29 +5,20 @@
 #include <cmath>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/matrix_free/fe_evaluation.h>
 
 namespace PhaseField
 {
   /**
-   * The evaluator of the Q1 kernels: Q1 with one quadrature point (the
-   * kernels read the DoF values and the cell's Jacobian only).
-   */
-  template <int dim, typename Number>
-  using Q1Evaluation = dealii::FEEvaluation<dim, 1, 1, 1, Number>;
-
-  /**
    * The Q1 stiffness matrix of an axis-parallel cube cell of edge h,
-   * h^(dim-2) A_ref, applied to the DoF values of an FEEvaluation (read with
-   * the constraints resolved, then distributed): every cell of the meshes
-   * of [0,1]^dim here is such a cube. A_ref, the matrix of the unit cube
-   * with the stiffness rule, is precomputed, so a cell costs 2^dim x 2^dim
-   * multiply-adds instead of the evaluation and integration at the
-   * quadrature points of the general FEEvaluation path, whose evaluate()
+   * h^(dim-2) A_ref, applied to the DoF values of a cell (Q1Cells reads
+   * them with the constraints resolved and distributes the result): every
+   * cell of the meshes of [0,1]^dim here is such a cube. A_ref, the matrix of
+   * the unit cube with the stiffness rule, is precomputed, so a cell costs
+   * 2^dim x 2^dim multiply-adds instead of the evaluation and integration at
+   * the quadrature points of the general FEEvaluation path, whose evaluate()
    * and integrate() took 50% of the perf samples of a 1-step level-5
    * sphere on 1 rank; with this kernel the 3-step run on 2 ranks took
-   * 29 s instead of 67 s. The cell's edge is read from the Jacobian of
-   * the MatrixFree object, which must have update_gradients.
+   * 29 s instead of 67 s.
    */
   template <int dim, typename Number>
   class Q1CellStiffness
@@ -65,31 +56,6 @@ namespace PhaseField
               }
             reference[i][j] = static_cast<Number>(a_ij);
           }
-    }
-
-    /**
-     * The DoF values of @p phi (reinit() on a cell batch) become
-     * @p factor h^(dim-2) A_ref times them.
-     */
-    template <typename Evaluation>
-    void
-    apply(Evaluation &phi, const Number factor) const
-    {
-      using VA        = dealii::VectorizedArray<Number>;
-      VA *const v     = phi.begin_dof_values();
-      const VA  h     = VA(1) / phi.inverse_jacobian(0)[0][0];
-      VA        scale = factor;
-      for (int d = 2; d < dim; ++d)
-        scale *= h;
-      for (unsigned int lane = 0; lane < VA::size(); ++lane)
-        {
-          Number values[n];
-          for (unsigned int i = 0; i < n; ++i)
-            values[i] = v[i][lane];
-          apply(values, scale[lane]);
-          for (unsigned int i = 0; i < n; ++i)
-            v[i][lane] = values[i];
-        }
     }
 
     /** The values of the cell's DoFs become @p scale A_ref times them. */
