@@ -141,23 +141,17 @@ namespace PhaseField
     adjust_layout(dst);
     // the edge values of src are read as zero; edge and boundary rows are
     // the identity
-    auto              &source = const_cast<LevelVector &>(src);
-    std::vector<float> edge_src, edge_dst;
-    for (const unsigned int i : level->edge_dofs)
-      {
-        edge_src.push_back(source.local_element(i));
-        edge_dst.push_back(dst.local_element(i));
-        source.local_element(i) = 0.f;
-      }
+    auto                    &source   = const_cast<LevelVector &>(src);
+    const std::vector<float> edge_src = edge_values(src);
+    std::vector<float>       edge_dst = edge_values(dst);
+    set_edge_values(source, std::vector<float>(edge_src.size(), 0.f));
     apply_add(dst, src);
     for (const unsigned int i : level->boundary_dofs)
       dst.local_element(i) += src.local_element(i);
-    for (unsigned int k = 0; k < level->edge_dofs.size(); ++k)
-      {
-        const unsigned int i    = level->edge_dofs[k];
-        source.local_element(i) = edge_src[k];
-        dst.local_element(i)    = edge_dst[k] + edge_src[k];
-      }
+    set_edge_values(source, edge_src);
+    for (unsigned int k = 0; k < edge_dst.size(); ++k)
+      edge_dst[k] += edge_src[k];
+    set_edge_values(dst, edge_dst);
   }
 
 
@@ -192,24 +186,14 @@ namespace PhaseField
     if (!level->any_edge)
       return;
     // the columns off the edge, then only the rows on the edge
-    auto              &source = const_cast<LevelVector &>(src);
-    std::vector<float> edge_src;
-    for (const unsigned int i : level->edge_dofs)
-      {
-        edge_src.push_back(source.local_element(i));
-        source.local_element(i) = 0.f;
-      }
+    auto                    &source   = const_cast<LevelVector &>(src);
+    const std::vector<float> edge_src = edge_values(src);
+    set_edge_values(source, std::vector<float>(edge_src.size(), 0.f));
     apply_add(dst, src);
-    std::vector<float> edge_dst;
-    for (const unsigned int i : level->edge_dofs)
-      edge_dst.push_back(dst.local_element(i));
-    dst = 0.f;
-    for (unsigned int k = 0; k < level->edge_dofs.size(); ++k)
-      {
-        const unsigned int i    = level->edge_dofs[k];
-        dst.local_element(i)    = edge_dst[k];
-        source.local_element(i) = edge_src[k];
-      }
+    const std::vector<float> edge_dst = edge_values(dst);
+    dst                               = 0.f;
+    set_edge_values(dst, edge_dst);
+    set_edge_values(source, edge_src);
   }
 
 
@@ -227,11 +211,33 @@ namespace PhaseField
     // the columns on the edge, then only the rows off the edge
     LevelVector edge_only;
     initialize_dof_vector(edge_only);
-    for (const unsigned int i : level->edge_dofs)
-      edge_only.local_element(i) = src.local_element(i);
+    set_edge_values(edge_only, edge_values(src));
     apply_add(dst, edge_only);
+    set_edge_values(dst, std::vector<float>(level->edge_dofs.size(), 0.f));
+  }
+
+
+
+  template <int dim>
+  std::vector<float>
+  LevelStiffness<dim>::edge_values(const LevelVector &vector) const
+  {
+    std::vector<float> values;
+    values.reserve(level->edge_dofs.size());
     for (const unsigned int i : level->edge_dofs)
-      dst.local_element(i) = 0.f;
+      values.push_back(vector.local_element(i));
+    return values;
+  }
+
+
+
+  template <int dim>
+  void
+  LevelStiffness<dim>::set_edge_values(LevelVector              &vector,
+                                       const std::vector<float> &values) const
+  {
+    for (unsigned int k = 0; k < values.size(); ++k)
+      vector.local_element(level->edge_dofs[k]) = values[k];
   }
 
 

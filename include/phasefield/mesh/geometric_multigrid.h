@@ -149,6 +149,15 @@ namespace PhaseField
     void
     apply_add(LevelVector &dst, const LevelVector &src) const;
 
+    /** The values of @p vector on the refinement edge (owned DoFs). */
+    std::vector<float>
+    edge_values(const LevelVector &vector) const;
+
+    /** Set the values of @p vector on the refinement edge to @p values. */
+    void
+    set_edge_values(LevelVector              &vector,
+                    const std::vector<float> &values) const;
+
     /**
      * Give @p vector the layout of the level's cells if it has another one
      * (a vector of the transfer), keeping its owned values.
