@@ -180,10 +180,7 @@ namespace PhaseField
   LevelStiffness<dim>::vmult_interface_down(LevelVector       &dst,
                                             const LevelVector &src) const
   {
-    adjust_layout(src);
-    adjust_layout(dst);
-    dst = 0.f;
-    if (!level->any_edge)
+    if (!start_interface_product(dst, src))
       return;
     // the columns off the edge, then only the rows on the edge
     auto                    &source   = const_cast<LevelVector &>(src);
@@ -203,10 +200,7 @@ namespace PhaseField
   LevelStiffness<dim>::vmult_interface_up(LevelVector       &dst,
                                           const LevelVector &src) const
   {
-    adjust_layout(src);
-    adjust_layout(dst);
-    dst = 0.f;
-    if (!level->any_edge)
+    if (!start_interface_product(dst, src))
       return;
     // the columns on the edge, then only the rows off the edge
     LevelVector edge_only;
@@ -214,6 +208,19 @@ namespace PhaseField
     set_edge_values(edge_only, edge_values(src));
     apply_add(dst, edge_only);
     set_edge_values(dst, std::vector<float>(level->edge_dofs.size(), 0.f));
+  }
+
+
+
+  template <int dim>
+  bool
+  LevelStiffness<dim>::start_interface_product(LevelVector       &dst,
+                                               const LevelVector &src) const
+  {
+    adjust_layout(src);
+    adjust_layout(dst);
+    dst = 0.f;
+    return level->any_edge;
   }
 
 

@@ -149,6 +149,13 @@ namespace PhaseField
     void
     apply_add(LevelVector &dst, const LevelVector &src) const;
 
+    /**
+     * Adjust the layouts of @p dst and @p src and zero @p dst; whether the
+     * level has a refinement edge (else the interface products are zero).
+     */
+    bool
+    start_interface_product(LevelVector &dst, const LevelVector &src) const;
+
     /** The values of @p vector on the refinement edge (owned DoFs). */
     std::vector<float>
     edge_values(const LevelVector &vector) const;
