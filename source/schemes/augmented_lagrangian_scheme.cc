@@ -356,8 +356,6 @@ namespace PhaseField
     , solver_type(LinearSolver::resolve_type(settings.linear_solver.type, dim))
     , next_penalty(parameters.initial_penalty)
   {
-    discretization.require_assembled_operators(
-      "The augmented Lagrangian scheme");
     if (solver_type == LinearSolverType::direct)
       schur_solver = std::make_unique<LinearSolver>(
         LinearSolverType::direct,
