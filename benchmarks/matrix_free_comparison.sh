@@ -8,7 +8,9 @@
 # wall time of the steps (statistics.csv), seconds per step and the peak
 # resident memory summed over the ranks (the program's last lines) and the
 # Willmore energy after the last step.
-# Usage: [STEPS=n] [NP=n] [SHAPE=sphere|cube] [TYPES="iterative matrix-free"]
+# SCHEME picks `Time stepping / Scheme` (default nested).
+# Usage: [STEPS=n] [NP=n] [SHAPE=sphere|cube] [SCHEME=name]
+#          [TYPES="iterative matrix-free"]
 #          benchmarks/matrix_free_comparison.sh [build dir] [levels...]
 #   e.g. benchmarks/matrix_free_comparison.sh build 6 7
 set -uo pipefail
@@ -31,6 +33,7 @@ for level in $levels; do
       --set "Phase field/Epsilon=4*h" --set "Time stepping/Tau=0.03*h" \
       --set "Time stepping/Inner tau=h^2" \
       --set "Time stepping/Number of steps=${STEPS:-2}" \
+      --set "Time stepping/Scheme=${SCHEME:-nested}" \
       --set "Output/VTU interval=0" --set "Linear solver/Type=$type" \
       > "$out.log" 2>&1 || echo "$level $type: FAILED ($out.log)"
     memory=$(sed -n 's/.*Peak resident memory, summed over .* rank(s): \([0-9]*\) MiB.*/\1/p' "$out.log")
