@@ -6,7 +6,9 @@
 # Prints per step the outer (AL), trust-region and CG iterations, the
 # Willmore energy and inside measure, and per run the wall time and the
 # peak memory summed over the ranks (the program's own report).
-# Usage: [STEPS=n] benchmarks/al_cube.sh [build dir] [levels...]
+# TYPE sets `Linear solver / Type` (default: the file's, auto).
+# Usage: [STEPS=n] [TYPE=iterative|matrix-free]
+#          benchmarks/al_cube.sh [build dir] [levels...]
 #   e.g. benchmarks/al_cube.sh build 6
 #        STEPS=10 benchmarks/al_cube.sh build 6 7
 set -uo pipefail
@@ -21,6 +23,7 @@ for level in $levels; do
     "parameter_files/willmore_flow/al_cube_h$level.prm" \
     --set "Output directory=$out" \
     --set "Time stepping/Number of steps=${STEPS:-1}" \
+    --set "Linear solver/Type=${TYPE:-auto}" \
     --set "Output/VTU interval=0" > "$out.log" 2>&1 || echo "level $level: FAILED ($out.log)"
   end=$(date +%s.%N)
   echo "level $level: wall $(python3 -c "print(round($end - $start, 1))") s, $(grep "Peak resident memory" "$out.log")"

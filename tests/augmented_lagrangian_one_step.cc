@@ -89,10 +89,9 @@ namespace
     const double   tau  = 0.03 * h;
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
     Testing::log() << dim << "D, "
-                   << (solver == LinearSolverType::direct ? "direct" :
-                       backend == OperatorBackend::matrix_free ?
-                                                            "matrix-free" :
-                                                            "iterative")
+                   << (solver == LinearSolverType::direct      ? "direct" :
+                       backend == OperatorBackend::matrix_free ? "matrix-free" :
+                                                                 "iterative")
                    << std::endl;
 
     typename Discretization<dim>::Settings mesh_settings{};
@@ -179,9 +178,6 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   compare<2>(6, 0.4, 0.0625, LinearSolverType::direct);
   compare<3>(4, 0.35, 0.125, LinearSolverType::iterative);
-  compare<3>(4,
-             0.35,
-             0.125,
-             LinearSolverType::iterative,
-             OperatorBackend::matrix_free);
+  compare<3>(
+    4, 0.35, 0.125, LinearSolverType::iterative, OperatorBackend::matrix_free);
 }

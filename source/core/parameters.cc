@@ -569,9 +569,10 @@ namespace PhaseField
       "algebraic multigrid (ML) on the assembled stiffness matrix (memory "
       "linear in the unknowns); matrix-free: CG with the stiffness operator "
       "applied cell by cell and preconditioned with geometric multigrid "
-      "(no matrix is stored; the nested scheme only); auto: direct in 2D; "
-      "in 3D matrix-free for the nested scheme (iterative for the other "
-      "schemes and for periodic boundary conditions).");
+      "(no matrix is stored; the nested and augmented lagrangian schemes); "
+      "auto: direct in 2D; in 3D matrix-free for these two schemes "
+      "(iterative for the semi-implicit scheme and for periodic boundary "
+      "conditions).");
     prm.declare_entry("Tolerance",
                       "1e-10",
                       Patterns::Double(0.),

@@ -87,19 +87,26 @@ namespace PhaseField
       coarse_max = std::max(coarse_max, coarse_edge);
       cubes = cubes && is_axis_parallel_cube(cell);
     };
-    if (on_level)
-      {
-        for (const auto &cell :
-             dof_handler.mg_cell_iterators_on_level(mg_level))
-          if (cell->is_locally_owned_on_level())
-            add_cell(cell);
-      }
-    else
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          add_cell(cell);
-    dofs.shrink_to_fit();
-    cell_level.shrink_to_fit();
+    // every owned cell once, counted first so that the tables are
+    // allocated once (growing them would take up to three times their size)
+    const auto for_each_owned_cell = [&](const auto &action) {
+      if (on_level)
+        {
+          for (const auto &cell :
+               dof_handler.mg_cell_iterators_on_level(mg_level))
+            if (cell->is_locally_owned_on_level())
+              action(cell);
+        }
+      else
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            action(cell);
+    };
+    std::size_t n_cells = 0;
+    for_each_owned_cell([&](const auto &) { ++n_cells; });
+    dofs.reserve(n_cells * n);
+    cell_level.reserve(n_cells);
+    for_each_owned_cell(add_cell);
 
     coarse_min = Utilities::MPI::min(coarse_min, comm);
     coarse_max = Utilities::MPI::max(coarse_max, comm);

@@ -387,12 +387,15 @@ namespace PhaseField
   std::string
   AugmentedLagrangianScheme<dim>::linear_solver_description() const
   {
-    return schur_solver ?
-             "trust region, Steihaug-Toint truncated CG with matrix-free "
-             "Hessian products, Schur-complement preconditioner (MUMPS)" :
-             "trust region, Steihaug-Toint truncated CG with matrix-free "
-             "Hessian products, Schur-complement preconditioner in product "
-             "form (algebraic multigrid)";
+    const std::string krylov =
+      "trust region, Steihaug-Toint truncated CG with matrix-free Hessian "
+      "products, Schur-complement preconditioner ";
+    if (schur_solver)
+      return krylov + "(MUMPS)";
+    return krylov + (discretization.get_settings().backend ==
+                         OperatorBackend::matrix_free ?
+                       "in product form (geometric multigrid, no matrix)" :
+                       "in product form (algebraic multigrid)");
   }
 
 

@@ -1,4 +1,5 @@
 #include <deal.II/base/conditional_ostream.h>
+#include <optional>
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/solvers/descent_solver.h>
 #include <phasefield/solvers/newton_solver.h>
@@ -218,8 +219,13 @@ namespace PhaseField
     const bool restoration = settings.outer_energy.has_restoration_terms();
     if (solves_by_descent() || (first_step && restoration))
       return descent_solve(step, state, control);
-    const BlockVector start(state);
-    const StepReport  newton = newton_solve(
+    // the start of the step is kept only where the descent method may
+    // need it (a block vector: 8 B per DoF at the peak of a step)
+    const bool                 descent_fallback = restoration || first_step;
+    std::optional<BlockVector> start;
+    if (descent_fallback)
+      start.emplace(state);
+    const StepReport newton = newton_solve(
       step, state, control, *linear_solver, pcout, settings.verbose);
     // Where Newton's method fails, the descent method takes the step from
     // its start before it is halved: the nested step is the minimiser of
@@ -229,12 +235,12 @@ namespace PhaseField
     // later failure means that the flow moves fast, and halving resolves
     // it, where the descent method may find a far lower minimiser (the
     // demo's two circles at step 14: W 25.2 -> 8.9 in one step).
-    if (newton.converged || (!restoration && !first_step))
+    if (newton.converged || !descent_fallback)
       return newton;
     pcout << "    Newton's method failed: the descent method from the "
              "start of the step"
           << std::endl;
-    state = start;
+    state = *start;
     NewtonControl descent_control(control);
     descent_control.max_iterations = settings.newton.max_descent_iterations;
     return combine(newton, descent_solve(step, state, descent_control));

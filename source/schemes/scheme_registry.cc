@@ -57,6 +57,7 @@ namespace PhaseField
         "Augmented Lagrangian).";
       entry.terms               = ModelTerms::all();
       entry.terms.mismatch_term = false;
+      entry.matrix_free         = true;
       entry.set_factory<AugmentedLagrangianScheme>();
       entry.set_parameters<AugmentedLagrangianParameters>();
       return entry;
