@@ -37,6 +37,22 @@ namespace
     return PhaseField::run_biharmonic_convergence_study<dim>(parameters);
   }
 
+  /** The parameters but Dimension and Scheme, tau = ttau = h^2. */
+  std::string
+  problem(const std::string &boundary_conditions,
+          const std::string &levels,
+          const std::string &final_time)
+  {
+    return "subsection Problem\n  set Boundary conditions = " +
+           boundary_conditions +
+           "\nend\nsubsection Convergence\n  set Levels = " + levels +
+           "\nend\nsubsection Time stepping\n  set Tau = h^2\n"
+           "  set Inner tau = h^2\n  set Final time = " +
+           final_time + "\nend\n";
+  }
+
+
+
   /** Both schemes on @p problem (all but Dimension and Scheme); logs. */
   template <int dim>
   void
@@ -67,30 +83,6 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  compare<2>(R"(
-subsection Problem
-  set Boundary conditions = neumann
-end
-subsection Convergence
-  set Levels = 4, 5
-end
-subsection Time stepping
-  set Tau = h^2
-  set Inner tau = h^2
-  set Final time = 0.009765625
-end
-)");
-  compare<3>(R"(
-subsection Problem
-  set Boundary conditions = dirichlet
-end
-subsection Convergence
-  set Levels = 3, 4
-end
-subsection Time stepping
-  set Tau = h^2
-  set Inner tau = h^2
-  set Final time = 0.00390625
-end
-)");
+  compare<2>(problem("neumann", "4, 5", "0.009765625"));
+  compare<3>(problem("dirichlet", "3, 4", "0.00390625"));
 }
