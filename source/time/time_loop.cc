@@ -1,7 +1,9 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <phasefield/core/stop_request.h>
 #include <phasefield/time/checkpoint.h>
 #include <phasefield/time/finite_fields.h>
@@ -14,6 +16,27 @@ namespace PhaseField
 
   namespace
   {
+    /**
+     * Whether @p a and @p b (the same layout) hold the same values on
+     * every rank: collective.
+     */
+    bool
+    same_values(const BlockVector &a, const BlockVector &b)
+    {
+      AssertDimension(a.n_blocks(), b.n_blocks());
+      bool same = true;
+      for (unsigned int block = 0; same && block < a.n_blocks(); ++block)
+        {
+          AssertDimension(a.block(block).locally_owned_size(),
+                          b.block(block).locally_owned_size());
+          same = std::equal(a.block(block).begin(),
+                            a.block(block).end(),
+                            b.block(block).begin());
+        }
+      return Utilities::MPI::min(same ? 1 : 0,
+                                 a.block(0).get_mpi_communicator()) == 1;
+    }
+
     /** @p head followed by each of @p tails. */
     template <typename T, typename... Tails>
     std::vector<T>
@@ -546,9 +569,14 @@ namespace PhaseField
                                       Attempt            attempt)
   {
     TimerOutput::Scope t(timer, "time step");
-    BlockVector        saved    = state;
-    unsigned int       halvings = 0;
-    double            &tau      = attempt.tau;
+    // the start of the step for a retry; a copy (8 B per DoF) only where
+    // it is not old_state: the coarse start, the extrapolated start, a
+    // step repeated on a refined mesh
+    std::optional<BlockVector> saved;
+    if (!same_values(state, old_state))
+      saved.emplace(state);
+    unsigned int halvings = 0;
+    double      &tau      = attempt.tau;
     for (;;)
       {
         scheme.prepare_step(state, start_tau, tau);
@@ -568,7 +596,7 @@ namespace PhaseField
           {
             // the extrapolation is for this tau: the same step from the
             // last result (old_state), then halvings from there
-            saved = old_state;
+            saved.reset();
             state = old_state;
             pcout << "  step " << step << ": " << failure
                   << " from the extrapolated start, retrying from the last "
@@ -576,7 +604,7 @@ namespace PhaseField
                   << std::endl;
             continue;
           }
-        state = saved;
+        state = saved ? *saved : old_state;
         if (!std::isfinite(report.final_residual_norm))
           non_finite_residual_message(step, tau);
         AssertThrow(halvings < settings.max_step_halvings,
