@@ -1,4 +1,3 @@
-#include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
@@ -18,22 +17,13 @@ namespace PhaseField
   {
     /**
      * Whether @p a and @p b (the same layout) hold the same values on
-     * every rank: collective.
+     * every rank: collective (deal.II's operator== compares the locally
+     * owned values only).
      */
     bool
     same_values(const BlockVector &a, const BlockVector &b)
     {
-      AssertDimension(a.n_blocks(), b.n_blocks());
-      bool same = true;
-      for (unsigned int block = 0; same && block < a.n_blocks(); ++block)
-        {
-          AssertDimension(a.block(block).locally_owned_size(),
-                          b.block(block).locally_owned_size());
-          same = std::equal(a.block(block).begin(),
-                            a.block(block).end(),
-                            b.block(block).begin());
-        }
-      return Utilities::MPI::min(same ? 1 : 0,
+      return Utilities::MPI::min(a == b ? 1 : 0,
                                  a.block(0).get_mpi_communicator()) == 1;
     }
 
