@@ -124,6 +124,8 @@ namespace PhaseField
     double                    eta    = std::pow(lambda, -AL::eta_exponent);
     TrustRegionControl        inner  = control.trust_region;
     Vector                    m_inverse_c(p);
+    if (verbose)
+      inner.progress = &pcout;
     {
       AugmentedLagrangianObjective objective(problem, p, lambda);
       BlockVector                  g(x);

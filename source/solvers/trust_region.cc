@@ -49,6 +49,24 @@ namespace PhaseField
       const double rho = actual / model_decrease;
       return std::isfinite(rho) ? rho : -1.;
     }
+
+    /**
+     * The line of TrustRegionControl::progress after iteration
+     * @p report.iterations, if one is due.
+     */
+    void
+    print_progress(const TrustRegionControl &control,
+                   const TrustRegionReport  &report,
+                   const double              radius)
+    {
+      if (control.progress == nullptr ||
+          report.iterations % TrustRegion::progress_interval != 0)
+        return;
+      *control.progress << "      trust region " << report.iterations
+                        << ": |grad| = " << report.gradient_norm
+                        << "  radius = " << radius << "  (CG "
+                        << report.cg_iterations << " so far)" << std::endl;
+    }
   } // namespace
 
 
@@ -168,6 +186,7 @@ namespace PhaseField
                 break;
               }
           }
+        print_progress(control, report, radius);
       }
     report.converged = true;
     report.radius    = radius;

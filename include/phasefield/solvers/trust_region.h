@@ -1,6 +1,7 @@
 #ifndef phasefield_solvers_trust_region_h
 #define phasefield_solvers_trust_region_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <phasefield/core/linear_algebra.h>
 
 /**
@@ -67,6 +68,12 @@ namespace PhaseField
      * method would take.
      */
     double initial_radius = 0;
+    /**
+     * If set, a progress line (iteration, gradient norm, radius, CG
+     * iterations so far) every TrustRegion::progress_interval iterations:
+     * a trust-region solve may take minutes in 3D.
+     */
+    const dealii::ConditionalOStream *progress = nullptr;
   };
 
   /** What trust_region_minimize() did. */
@@ -154,6 +161,8 @@ namespace PhaseField
     constexpr double stagnation = 0.5;
     /** Largest relative CG tolerance. */
     constexpr double cg_forcing = 0.1;
+    /** Iterations between two lines of TrustRegionControl::progress. */
+    constexpr unsigned int progress_interval = 20;
   } // namespace TrustRegion
 } // namespace PhaseField
 
