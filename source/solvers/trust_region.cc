@@ -50,6 +50,8 @@ namespace PhaseField
       return std::isfinite(rho) ? rho : -1.;
     }
 
+
+
     /**
      * The line of TrustRegionControl::progress after iteration
      * @p report.iterations, if one is due.
