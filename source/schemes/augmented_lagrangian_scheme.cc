@@ -583,12 +583,23 @@ namespace PhaseField
   {
     if (!settings.outer_energy.has_restoration_terms())
       return;
-    // V and its adjoint P re-solved for the new mesh (as the nested scheme
-    // does); the multiplier of the augmented Lagrangian is -2s times that P
+    // V and its adjoint P solved for the new mesh (as the nested scheme
+    // does, from V = U); the multiplier of the augmented Lagrangian is -2s
+    // times that P
+    state.block(Field::V) = state.block(Field::U);
     model.solve_inner_problem(state, tau, solver_type);
     state.block(Field::P) *=
       -AugmentedLagrangianStep<dim>::objective_scale(model.coefficients(tau),
                                                      parameters.scaled);
+  }
+
+
+  template <int dim>
+  bool
+  AugmentedLagrangianScheme<dim>::restores_after_remesh(
+    const unsigned int field) const
+  {
+    return field != Field::U && settings.outer_energy.has_restoration_terms();
   }
 
 

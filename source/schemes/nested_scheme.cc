@@ -292,12 +292,21 @@ namespace PhaseField
   NestedScheme<dim>::after_remesh(BlockVector &state, const double tau)
   {
     reset_solver();
-    if (!settings.outer_energy.has_restoration_terms())
-      return;
-    // The transferred V is not the inner minimiser on the new mesh, and
-    // the energy of the state would not be the one the next step
-    // decreases: re-solve V and P for U.
+    // V and P are not carried by the transfer (an interpolated V would
+    // not be the inner minimiser on the new mesh, and with restoration
+    // terms the energy of the state not the one the next step decreases):
+    // solved for U, with U as the start of the inner Newton iteration
+    state.block(Field::V) = state.block(Field::U);
     model.solve_inner_problem(state, tau, linear_solver->type());
+  }
+
+
+
+  template <int dim>
+  bool
+  NestedScheme<dim>::restores_after_remesh(const unsigned int field) const
+  {
+    return field != Field::U;
   }
 
 

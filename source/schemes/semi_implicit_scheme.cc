@@ -318,6 +318,14 @@ namespace PhaseField
   }
 
 
+  template <int dim>
+  bool
+  SemiImplicitScheme<dim>::restores_after_remesh(const unsigned int field) const
+  {
+    return field == F::F;
+  }
+
+
 
   template <int dim>
   Energies

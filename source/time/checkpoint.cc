@@ -87,7 +87,8 @@ namespace PhaseField
             << "problem_data " << state.problem_data.size() << '\n';
         for (const double value : state.problem_data)
           out << value << '\n';
-        out << "step_size_limit " << state.step_size_limit << '\n';
+        out << "step_size_limit " << state.step_size_limit << '\n'
+            << "stored_fields " << state.n_stored_fields << '\n';
         return out.str();
       }
 
@@ -210,6 +211,15 @@ namespace PhaseField
         if (!in || limit_key != "step_size_limit" || key[0] != "step" ||
             key[4] != "pvd_records" || tail_key[0] != "step_offset" ||
             tail_key[2] != "problem_data")
+          throw InputError("The checkpoint file <" + filename +
+                           "> is damaged.");
+        // absent in the checkpoints of earlier versions: all fields
+        std::string stored_key;
+        state.n_stored_fields = state.n_fields;
+        if (in >> stored_key &&
+            (stored_key != "stored_fields" || !(in >> state.n_stored_fields) ||
+             state.n_stored_fields == 0 ||
+             state.n_stored_fields > state.n_fields))
           throw InputError("The checkpoint file <" + filename +
                            "> is damaged.");
         check_sanity(state, filename);

@@ -2,6 +2,7 @@
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <phasefield/core/stop_request.h>
 #include <phasefield/time/checkpoint.h>
@@ -273,8 +274,22 @@ namespace PhaseField
                        std::to_string(scheme.n_fields()) +
                        " (<Time stepping / Scheme> must be that of the run "
                        "that wrote it).");
-    state.reinit(saved.n_fields);
-    discretization.load(Checkpoint::mesh_filename(path), state);
+    BlockVector stored(saved.n_stored_fields);
+    discretization.load(Checkpoint::mesh_filename(path), stored);
+    discretization.reinit(state, saved.n_fields);
+    const bool restores = saved.n_stored_fields < saved.n_fields;
+    const std::vector<unsigned int> blocks =
+      restores ? carried_blocks(saved.n_fields) : all_blocks(saved.n_fields);
+    if (blocks.size() != saved.n_stored_fields)
+      throw InputError("The checkpoint <" + path + "> holds " +
+                       std::to_string(saved.n_stored_fields) + " of the " +
+                       std::to_string(saved.n_fields) +
+                       " fields, but the scheme <" + scheme.name() +
+                       "> restores the others only with " +
+                       std::to_string(blocks.size()) + " stored.");
+    for (unsigned int i = 0; i < blocks.size(); ++i)
+      state.block(blocks[i]).swap(stored.block(i));
+    state.collect_sizes();
     discretization.reinit(old_state, saved.n_fields);
     discretization.set_pvd_records(saved.pvd_records);
     time            = saved.time;
@@ -285,6 +300,11 @@ namespace PhaseField
     client.after_load(state, saved.problem_data);
     state_energies.reset();
     scheme.reset_solver();
+    if (restores)
+      {
+        scheme.after_remesh(state, state_tau);
+        discretization.distribute_constraints(state);
+      }
     // the DoFs are in p4est's order now, and a resumed run has no history
     predictor.forget();
     return saved.step;
@@ -448,11 +468,25 @@ namespace PhaseField
     saved.step_offset     = step_offset;
     saved.finished        = finished && step != final_step;
     saved.problem_data    = client.checkpoint_data();
-    Checkpoint::write(settings.output_directory,
-                      discretization,
-                      state,
-                      saved,
-                      settings.checkpoint_parameters);
+    // the fields a change of the mesh carries: the packing of the others
+    // would be the peak of the step's memory (TimeSteppingScheme::
+    // restores_after_remesh()); the reload below restores them
+    BlockVector carried   = carried_part(state);
+    saved.n_stored_fields = carried.n_blocks();
+    try
+      {
+        Checkpoint::write(settings.output_directory,
+                          discretization,
+                          carried,
+                          saved,
+                          settings.checkpoint_parameters);
+      }
+    catch (...)
+      {
+        give_back(carried, state, false);
+        throw;
+      }
+    give_back(carried, state, false);
     pcout << "  checkpoint written after step " << step << std::endl;
     // continue from what was written, as a resumed run does: the same
     // cell and DoF order, a fresh solver
@@ -505,7 +539,13 @@ namespace PhaseField
   TimeLoop<dim>::refine_to_band(BlockVector &state, const double tau)
   {
     TimerOutput::Scope t(timer, "mesh: adapt");
-    if (!discretization.refine_to_band(with_history({&state, &old_state})))
+    BlockVector        carried_state = carried_part(state);
+    BlockVector        carried_old   = carried_part(old_state);
+    const bool         changed       = discretization.refine_to_band(
+      with_history({&carried_state, &carried_old}));
+    give_back(carried_state, state, changed);
+    give_back(carried_old, old_state, changed);
+    if (!changed)
       return;
     distribute_history_constraints();
     // old_state last: a scheme may keep data of the start of the step
@@ -525,6 +565,61 @@ namespace PhaseField
     for (BlockVector *v : predictor.history())
       fields.push_back(v);
     return fields;
+  }
+
+
+
+  template <int dim>
+  BlockVector
+  TimeLoop<dim>::carried_part(BlockVector &fields) const
+  {
+    const std::vector<unsigned int> blocks = carried_blocks(fields.n_blocks());
+    BlockVector                     carried(blocks.size());
+    for (unsigned int i = 0; i < blocks.size(); ++i)
+      carried.block(i).swap(fields.block(blocks[i]));
+    carried.collect_sizes();
+    return carried;
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::give_back(BlockVector &carried,
+                           BlockVector &fields,
+                           const bool   changed) const
+  {
+    if (changed)
+      discretization.reinit(fields, fields.n_blocks());
+    const std::vector<unsigned int> blocks = carried_blocks(fields.n_blocks());
+    for (unsigned int i = 0; i < blocks.size(); ++i)
+      fields.block(blocks[i]).swap(carried.block(i));
+    fields.collect_sizes();
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  TimeLoop<dim>::all_blocks(const unsigned int n_fields)
+  {
+    std::vector<unsigned int> blocks(n_fields);
+    std::iota(blocks.begin(), blocks.end(), 0u);
+    return blocks;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  TimeLoop<dim>::carried_blocks(const unsigned int n_fields) const
+  {
+    // block 0, the phase field, is always carried: the mesh follows it
+    std::vector<unsigned int> blocks{0};
+    for (unsigned int b = 1; b < n_fields; ++b)
+      if (!scheme.restores_after_remesh(b))
+        blocks.push_back(b);
+    return blocks;
   }
 
 
@@ -688,7 +783,11 @@ namespace PhaseField
     const bool   report_energy = settings.verbose && scheme.has_energy_law();
     const double before =
       report_energy ? scheme.energy_law_energy(energies_of(state)) : 0.;
-    if (!discretization.adapt_to_phase_field(with_history({&state}), 1., true))
+    BlockVector carried = carried_part(state);
+    const bool  changed =
+      discretization.adapt_to_phase_field(with_history({&carried}), 1., true);
+    give_back(carried, state, changed);
+    if (!changed)
       return;
     distribute_history_constraints();
     discretization.reinit(old_state, state.n_blocks());

@@ -95,6 +95,8 @@ namespace PhaseField
     before_remesh() override;
     void
     after_remesh(BlockVector &state, const double tau) override;
+    bool
+    restores_after_remesh(const unsigned int field) const override;
     void
     reset_solver() override;
     /** NestedModel::energies(). */

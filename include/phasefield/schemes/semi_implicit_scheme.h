@@ -141,6 +141,8 @@ namespace PhaseField
 
     void
     after_remesh(BlockVector &state, const double tau) override;
+    bool
+    restores_after_remesh(const unsigned int field) const override;
     void
     reset_solver() override;
     /** Willmore energy (3/4) w_eps[U] and area. */

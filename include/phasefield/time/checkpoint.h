@@ -50,6 +50,14 @@ namespace PhaseField
       double step_size_limit = 0;
       /** Number of fields (blocks of the state). */
       unsigned int n_fields = 0;
+      /**
+       * Number of those fields the mesh file holds: the phase field and
+       * the fields a change of the mesh carries, in the order of the state
+       * (TimeSteppingScheme::restores_after_remesh(): the scheme restores
+       * the others after loading). Checkpoints written before this was
+       * recorded hold all fields.
+       */
+      unsigned int n_stored_fields = 0;
       /** The records of solution.pvd so far (time, file). */
       std::vector<std::pair<double, std::string>> pvd_records;
       /**

@@ -463,6 +463,32 @@ namespace PhaseField
     std::vector<BlockVector *>
     with_history(std::vector<BlockVector *> fields);
 
+    /**
+     * The blocks of @p fields that a change of the mesh carries: all but
+     * those the scheme restores after it (TimeSteppingScheme::
+     * restores_after_remesh()), swapped out of @p fields into a block
+     * vector of their own for the transfer; give_back() returns them.
+     */
+    BlockVector
+    carried_part(BlockVector &fields) const;
+
+    /**
+     * Swap the blocks of @p carried back into @p fields, after moving
+     * @p fields to the new mesh (zero there) if the mesh @p changed.
+     */
+    void
+    give_back(BlockVector &carried,
+              BlockVector &fields,
+              const bool   changed) const;
+
+    /** The indices of the blocks carried_part() takes from @p n_fields. */
+    std::vector<unsigned int>
+    carried_blocks(const unsigned int n_fields) const;
+
+    /** The indices 0, ..., @p n_fields - 1. */
+    static std::vector<unsigned int>
+    all_blocks(const unsigned int n_fields);
+
     /** Distribute the constraints in the transferred history. */
     void
     distribute_history_constraints();
