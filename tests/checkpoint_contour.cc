@@ -28,11 +28,15 @@
 // digits of statistics.csv; energies, mismatch and Newton counts stay
 // compared.
 // Resuming with other Multilevel / Levels than the writer's is an
-// InputError.
+// InputError. The checkpoints hold U alone of the nested scheme's U, V, P
+// (state.txt: stored_fields; V and P are solved for U after loading,
+// TimeSteppingScheme::restores_after_remesh()): the agreement above holds
+// with that.
 
 #include "tests.h"
 
 #include <deal.II/base/mpi.h>
+#include <filesystem>
 #include <fstream>
 
 namespace
@@ -125,6 +129,31 @@ end
       }
     MPI_Barrier(MPI_COMM_WORLD);
   }
+
+
+
+  /**
+   * "<stored> of <all>" from the state.txt of the checkpoint in
+   * @p directory (a run keeps only its last one).
+   */
+  std::string
+  stored_fields(const std::string &directory)
+  {
+    for (const auto &entry : std::filesystem::directory_iterator(directory))
+      if (entry.path().filename().string().rfind("checkpoint-", 0) == 0)
+        {
+          std::ifstream     in(entry.path() / "state.txt");
+          const std::string all_key    = "n_fields ",
+                            stored_key = "stored_fields ";
+          std::string line, n_fields;
+          while (std::getline(in, line))
+            if (line.rfind(all_key, 0) == 0)
+              n_fields = line.substr(all_key.size());
+            else if (line.rfind(stored_key, 0) == 0)
+              return line.substr(stored_key.size()) + " of " + n_fields;
+        }
+    return "no checkpoint";
+  }
 } // namespace
 
 
@@ -140,6 +169,8 @@ main(int argc, char **argv)
   for (const auto &row : reference.rows)
     log << ' ' << row[Testing::column(reference.header, "step")];
   log << " (0-3 on level 5, the level-start row 3 and 4-6 on level 6)"
+      << std::endl;
+  log << "fields in its last checkpoint: " << stored_fields("uninterrupted")
       << std::endl;
 
   run(parameters("5", "2", false), "interrupted");
