@@ -287,9 +287,7 @@ namespace PhaseField
                        " fields, but the scheme <" + scheme.name() +
                        "> restores the others only with " +
                        std::to_string(blocks.size()) + " stored.");
-    for (unsigned int i = 0; i < blocks.size(); ++i)
-      state.block(blocks[i]).swap(stored.block(i));
-    state.collect_sizes();
+    swap_into(blocks, stored, state);
     discretization.reinit(old_state, saved.n_fields);
     discretization.set_pvd_records(saved.pvd_records);
     time            = saved.time;
@@ -591,9 +589,19 @@ namespace PhaseField
   {
     if (changed)
       discretization.reinit(fields, fields.n_blocks());
-    const std::vector<unsigned int> blocks = carried_blocks(fields.n_blocks());
+    swap_into(carried_blocks(fields.n_blocks()), carried, fields);
+  }
+
+
+
+  template <int dim>
+  void
+  TimeLoop<dim>::swap_into(const std::vector<unsigned int> &blocks,
+                           BlockVector                     &part,
+                           BlockVector                     &fields)
+  {
     for (unsigned int i = 0; i < blocks.size(); ++i)
-      fields.block(blocks[i]).swap(carried.block(i));
+      fields.block(blocks[i]).swap(part.block(i));
     fields.collect_sizes();
   }
 
