@@ -36,8 +36,8 @@
 #include "tests.h"
 
 #include <deal.II/base/mpi.h>
-#include <filesystem>
 #include <fstream>
+#include <phasefield/time/checkpoint.h>
 
 namespace
 {
@@ -133,26 +133,17 @@ end
 
 
   /**
-   * "<stored> of <all>" from the state.txt of the checkpoint in
-   * @p directory (a run keeps only its last one).
+   * "<stored> of <all>" fields of the newest checkpoint in @p directory,
+   * read as a resumed run reads it. Collective.
    */
   std::string
   stored_fields(const std::string &directory)
   {
-    for (const auto &entry : std::filesystem::directory_iterator(directory))
-      if (entry.path().filename().string().rfind("checkpoint-", 0) == 0)
-        {
-          std::ifstream     in(entry.path() / "state.txt");
-          const std::string all_key    = "n_fields ",
-                            stored_key = "stored_fields ";
-          std::string line, n_fields;
-          while (std::getline(in, line))
-            if (line.rfind(all_key, 0) == 0)
-              n_fields = line.substr(all_key.size());
-            else if (line.rfind(stored_key, 0) == 0)
-              return line.substr(stored_key.size()) + " of " + n_fields;
-        }
-    return "no checkpoint";
+    const Checkpoint::State state =
+      Checkpoint::read_state(Checkpoint::find_last(directory, MPI_COMM_WORLD),
+                             MPI_COMM_WORLD);
+    return std::to_string(state.n_stored_fields) + " of " +
+           std::to_string(state.n_fields);
   }
 } // namespace
 
