@@ -369,11 +369,9 @@ namespace PhaseField
       // is refined, not the wider one of the coarse epsilon
       const double ratio =
         this->level_parameters.model.epsilon / next.model.epsilon;
-      this->discretization.refine_to_level(next.mesh.finest_level,
-                                           this->solution,
-                                           parameters.multilevel.sharpen ?
-                                             1 / ratio :
-                                             1);
+      this->refine_u_to_level(next.mesh.finest_level,
+                              this->solution,
+                              parameters.multilevel.sharpen ? 1 / ratio : 1);
       if (parameters.multilevel.sharpen)
         this->sharpen_profile(this->solution.block(0), ratio);
       this->discretization.distribute_constraints(this->solution);

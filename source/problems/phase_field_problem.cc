@@ -227,7 +227,7 @@ namespace PhaseField
     const WillmoreParameters next = willmore_parameters.for_finest_level(level);
     const double ratio = level_parameters.model.epsilon / next.model.epsilon;
     // the band of the sharpened profile (see ContourProblem::move_to_level())
-    discretization.refine_to_level(level, start, 1 / ratio);
+    refine_u_to_level(level, start, 1 / ratio);
     level_parameters = next;
     // the mesh of the step resolves the initial data too
     discretization.reinit(solution, scheme->n_fields());
@@ -295,6 +295,26 @@ namespace PhaseField
       value =
         std::tanh(ratio * std::atanh(std::clamp(value, -largest, largest)));
     u.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  PhaseFieldProblem<dim>::refine_u_to_level(const unsigned int level,
+                                            BlockVector       &state,
+                                            const double       band_scale)
+  {
+    const unsigned int n_fields = state.n_blocks();
+    BlockVector        u(1);
+    u.block(0).swap(state.block(0));
+    u.collect_sizes();
+    // the other fields of the coarse mesh are freed before the transfer
+    state.reinit(0);
+    discretization.refine_to_level(level, u, band_scale);
+    discretization.reinit(state, n_fields);
+    state.block(0).swap(u.block(0));
+    state.collect_sizes();
   }
 
 

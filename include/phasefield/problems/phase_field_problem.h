@@ -183,6 +183,19 @@ namespace PhaseField
     static void
     sharpen_profile(Vector &u, const double ratio);
 
+    /**
+     * Refine the mesh to the finest level @p level
+     * (Discretization::refine_to_level()) carrying only U, block 0 of
+     * @p state; the other blocks come back zero on the new mesh. For a
+     * level transition after which TimeSteppingScheme::initialize() sets
+     * them from U: their packing would raise the transition's memory
+     * peak for nothing.
+     */
+    void
+    refine_u_to_level(const unsigned int level,
+                      BlockVector       &state,
+                      const double       band_scale);
+
     const WillmoreParameters &willmore_parameters;
     /**
      * The parameters of the level the fields are on: willmore_parameters, or a
