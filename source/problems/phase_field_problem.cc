@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
+#include <phasefield/core/block_vector_tools.h>
 #include <phasefield/core/constants.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/geometry/shapes.h>
@@ -306,15 +307,12 @@ namespace PhaseField
                                             const double       band_scale)
   {
     const unsigned int n_fields = state.n_blocks();
-    BlockVector        u(1);
-    u.block(0).swap(state.block(0));
-    u.collect_sizes();
+    BlockVector        u        = take_blocks(state, {0});
     // the other fields of the coarse mesh are freed before the transfer
     state.reinit(0);
     discretization.refine_to_level(level, u, band_scale);
     discretization.reinit(state, n_fields);
-    state.block(0).swap(u.block(0));
-    state.collect_sizes();
+    swap_into({0}, u, state);
   }
 
 

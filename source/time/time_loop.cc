@@ -4,6 +4,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <phasefield/core/block_vector_tools.h>
 #include <phasefield/core/stop_request.h>
 #include <phasefield/time/checkpoint.h>
 #include <phasefield/time/finite_fields.h>
@@ -571,12 +572,7 @@ namespace PhaseField
   BlockVector
   TimeLoop<dim>::carried_part(BlockVector &fields) const
   {
-    const std::vector<unsigned int> blocks = carried_blocks(fields.n_blocks());
-    BlockVector                     carried(blocks.size());
-    for (unsigned int i = 0; i < blocks.size(); ++i)
-      carried.block(i).swap(fields.block(blocks[i]));
-    carried.collect_sizes();
-    return carried;
+    return take_blocks(fields, carried_blocks(fields.n_blocks()));
   }
 
 
@@ -590,19 +586,6 @@ namespace PhaseField
     if (changed)
       discretization.reinit(fields, fields.n_blocks());
     swap_into(carried_blocks(fields.n_blocks()), carried, fields);
-  }
-
-
-
-  template <int dim>
-  void
-  TimeLoop<dim>::swap_into(const std::vector<unsigned int> &blocks,
-                           BlockVector                     &part,
-                           BlockVector                     &fields)
-  {
-    for (unsigned int i = 0; i < blocks.size(); ++i)
-      fields.block(blocks[i]).swap(part.block(i));
-    fields.collect_sizes();
   }
 
 

@@ -485,15 +485,6 @@ namespace PhaseField
     std::vector<unsigned int>
     carried_blocks(const unsigned int n_fields) const;
 
-    /**
-     * Swap block i of @p part with block @p blocks[i] of @p fields (the
-     * blocks of a checkpoint or a transfer back into the state).
-     */
-    static void
-    swap_into(const std::vector<unsigned int> &blocks,
-              BlockVector                     &part,
-              BlockVector                     &fields);
-
     /** The indices 0, ..., @p n_fields - 1. */
     static std::vector<unsigned int>
     all_blocks(const unsigned int n_fields);
