@@ -353,7 +353,9 @@ namespace PhaseField
         if (verbose)
           pcout << "    Newton " << it << ": residual " << iterate.norm << " ("
                 << report.linear_iterations - linear_before
-                << " linear iterations, " << linear_solver.n_factorizations()
+                << " linear iterations to a relative "
+                << linear_solver.get_tolerance() << ", "
+                << linear_solver.n_factorizations()
                 << " factorizations)" << (relaxed ? ", watchdog" : "")
                 << std::endl;
         if (reached_target(
