@@ -13,9 +13,11 @@
 # by the Eisenstat-Walker forcing term), which does not depend on how
 # tight Newton's method asked its systems to be solved, as CG per Newton
 # iteration does.
-# SCHEME picks `Time stepping / Scheme` (default nested).
+# SCHEME picks `Time stepping / Scheme` (default nested); EPS, TAU and
+# INNER_TAU replace eps = 4*h, tau = 0.03*h and inner tau = h^2 (e.g.
+# EPS=1/16 for one continuous problem on every level).
 # Usage: [STEPS=n] [NP=n] [SHAPE=sphere|cube] [SCHEME=name]
-#          [TYPES="iterative matrix-free"]
+#          [TYPES="iterative matrix-free"] [EPS=..] [TAU=..] [INNER_TAU=..]
 #          benchmarks/matrix_free_comparison.sh [build dir] [levels...]
 #   e.g. benchmarks/matrix_free_comparison.sh build 6 7
 set -uo pipefail
@@ -35,8 +37,9 @@ for level in $levels; do
       --set "Dimension=3" --set "Output directory=$out" \
       --set "Geometry/Shape=$shape" --set "Geometry/$size" \
       --set "Mesh/Finest level=$level" --set "Mesh/Coarsest level=3" \
-      --set "Phase field/Epsilon=4*h" --set "Time stepping/Tau=0.03*h" \
-      --set "Time stepping/Inner tau=h^2" \
+      --set "Phase field/Epsilon=${EPS:-4*h}" \
+      --set "Time stepping/Tau=${TAU:-0.03*h}" \
+      --set "Time stepping/Inner tau=${INNER_TAU:-h^2}" \
       --set "Time stepping/Number of steps=${STEPS:-2}" \
       --set "Time stepping/Scheme=${SCHEME:-nested}" \
       --set "Output/VTU interval=0" --set "Linear solver/Type=$type" \
