@@ -12,7 +12,8 @@
 # the CG iterations over the sum of -log10 of the relative tolerances set
 # by the Eisenstat-Walker forcing term), which does not depend on how
 # tight Newton's method asked its systems to be solved, as CG per Newton
-# iteration does.
+# iteration does. The runs are verbose (`Output / Verbose = true`) for
+# this; the times include its output.
 # SCHEME picks `Time stepping / Scheme` (default nested); EPS, TAU and
 # INNER_TAU replace eps = 4*h, tau = 0.03*h and inner tau = h^2 (e.g.
 # EPS=1/16 for one continuous problem on every level).
