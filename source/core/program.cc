@@ -104,6 +104,10 @@ namespace PhaseField
       std::istringstream       parts(setting.substr(0, equals));
       for (std::string part; std::getline(parts, part, '/');)
         path.push_back(trim(part));
+      if (path.empty() || path.back().empty())
+        throw InputError("--set <" + setting +
+                         "> names no parameter before the \"=\"; use the "
+                         "form \"Subsection/Name=value\".");
       const std::string name  = path.back();
       const std::string value = trim(setting.substr(equals + 1));
       path.pop_back();
