@@ -164,7 +164,7 @@ namespace PhaseField
            "verification, an output\n"
            "directory in use by another run), 1 for any other error "
            "(e.g. Newton's method\n"
-           "failed, a failed write, a stop by SIGTERM or SIGINT).\n\n"
+           "failed, a failed write, a stop by SIGTERM, SIGINT or SIGHUP).\n\n"
         << "Parameters (with defaults and documentation):\n\n";
       prm.print_parameters(std::cout, ParameterHandler::PRM);
     }

@@ -30,6 +30,9 @@ namespace PhaseField
   {
     std::signal(SIGTERM, request_stop);
     std::signal(SIGINT, request_stop);
+    // a closed terminal or ssh session: stop as for SIGTERM, so the lock
+    // of the output directory is released and a checkpoint written
+    std::signal(SIGHUP, request_stop);
   }
 
 
@@ -44,6 +47,8 @@ namespace PhaseField
       return "SIGTERM";
     if (signal == SIGINT)
       return "SIGINT";
+    if (signal == SIGHUP)
+      return "SIGHUP";
     return signal == 0 ? "" : "signal " + std::to_string(signal);
   }
 } // namespace PhaseField

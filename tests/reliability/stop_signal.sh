@@ -1,6 +1,6 @@
 #!/bin/sh
-# Usage: stop_signal.sh <ranks> <mpiexec> <willmore_flow> <work directory>
-# SIGTERM stops a run at the next step boundary on all ranks
+# Usage: stop_signal.sh <ranks> <mpiexec> <willmore_flow> <work directory> [signal]
+# SIGTERM (or [signal]: TERM, INT, HUP) stops a run at the next step boundary on all ranks
 # (doc/willmore_flow.md, "Output"): willmore_flow (quarter circle at
 # level 5, 400 steps, checkpoints every 1000 steps, i.e. none due) gets
 # SIGTERM once statistics.csv has 4 rows (on 2 ranks one of the ranks
@@ -8,7 +8,7 @@
 # relaying their output: the other rank must stop at the same step). It must exit with status 1 within 60 s, say after which
 # step k it stopped, write the checkpoint of step k although none was due,
 # and a resume up to step k + 1 must continue from it.
-ranks="$1"; mpiexec="$2"; program="$3"; work="$4"
+ranks="$1"; mpiexec="$2"; program="$3"; work="$4"; signal="${5:-TERM}"
 . "$(dirname "$0")/common.sh"
 rm -rf "$work"; mkdir -p "$work"
 set -- "$program" --set "Geometry/Shape=quarter circle" \
@@ -33,15 +33,15 @@ for i in $(seq 1 600); do
   [ -n "$target" ] && [ "$rows" -ge 5 ] && break
   sleep 0.1
 done
-kill -TERM "$target"
+kill -"$signal" "$target"
 wait $job
 status=$?
 output=$(cat "$work/run.log")
-expect "SIGTERM" 1 "Stopped by SIGTERM after step [0-9]+: .*checkpoint of this step is in"
-step=$(printf '%s' "$output" | sed -n 's/.*Stopped by SIGTERM after step \([0-9]*\).*/\1/p' | head -1)
+expect "SIG$signal" 1 "Stopped by SIG$signal after step [0-9]+: .*checkpoint of this step is in"
+step=$(printf '%s' "$output" | sed -n "s/.*Stopped by SIG$signal after step \\([0-9]*\\).*/\\1/p" | head -1)
 [ -n "$step" ] && [ -d "$work/run/checkpoint-$step" ] ||
   { echo "FAIL: no checkpoint-$step"; failed=1; }
 run "$ranks" "$@" --set "Checkpoint/Resume=true" \
   --set "Time stepping/Number of steps=$((step + 1))"
-expect "resume after SIGTERM" 0 "resuming after step $step"
+expect "resume after SIG$signal" 0 "resuming after step $step"
 exit $failed

@@ -9,7 +9,7 @@ namespace PhaseField
 {
   /**
    * Thrown on every rank when a run stops at a step boundary because of
-   * SIGTERM or SIGINT (stop_requested()); run_program() prints its message
+   * SIGTERM, SIGINT or SIGHUP (stop_requested()); run_program() prints its message
    * and exits with status 1.
    */
   class StopRequest : public std::runtime_error
@@ -21,7 +21,7 @@ namespace PhaseField
   };
 
   /**
-   * Install the handlers of SIGTERM and SIGINT: the first one only sets a
+   * Install the handlers of SIGTERM, SIGINT and SIGHUP: the first one only sets a
    * flag that the time loop reads at the next step boundary
    * (stop_requested()); a second one ends the process at once (the
    * default action).
@@ -31,7 +31,7 @@ namespace PhaseField
 
   /**
    * The name of the signal that asked this process or any rank of
-   * @p mpi_communicator to stop ("SIGTERM", "SIGINT"), empty if none.
+   * @p mpi_communicator to stop ("SIGTERM", "SIGINT", "SIGHUP"), empty if none.
    * Collective, so that all ranks stop at the same step.
    */
   std::string
