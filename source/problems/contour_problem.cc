@@ -448,10 +448,8 @@ namespace PhaseField
           unfinished_sub_step.reset();
         return report;
       }
-    // the time loop keeps P for steps of size tau; the nested sub-steps
-    // have tau/2
-    const double half = 0.5 * tau;
-    scheme.prepare_step(state, tau, half);
+    // the time loop prepares P for the nested sub-steps (sub_step_size())
+    const double half      = sub_step_size(tau);
     unfinished_sub_step    = {SubStep::first_nested_step, tau};
     const StepReport first = scheme.advance(old_state, state, half);
     if (!first.converged)
@@ -473,7 +471,6 @@ namespace PhaseField
     const StepReport  second = scheme.advance(middle, state, half);
     if (second.converged)
       unfinished_sub_step.reset();
-    scheme.prepare_step(state, half, tau);
     return combine(first, second);
   }
 

@@ -208,8 +208,8 @@ namespace PhaseField
           << ", epsilon = " << level_parameters.model.epsilon
           << ", tau = " << tau << ", " << discretization.n_dofs()
           << " DoFs per field)" << std::endl;
-    scheme->prepare_step(start, level_parameters.model.tau, tau);
-    const StepReport report = this->advance(*scheme, solution, start, tau);
+    const StepReport report = this->prepared_advance(
+      *scheme, solution, start, level_parameters.model.tau, tau);
     pcout << "  level " << level_parameters.mesh.finest_level << ": "
           << report.newton_iterations << " Newton, " << report.linear_iterations
           << " linear iterations, " << timer.wall_time() << " s"

@@ -68,6 +68,19 @@ namespace PhaseField
             const double             tau) override;
 
     /**
+     * The nested sub-steps of the split step have tau/2 (the time loop
+     * prepares the multipliers for them); the monolithic step is one
+     * step of @p tau.
+     */
+    double
+    sub_step_size(const double tau) const override
+    {
+      return parameters.time_stepping.coupling == ContourCoupling::monolithic ?
+               tau :
+               0.5 * tau;
+    }
+
+    /**
      * The split step has no energy law of the nested scheme; the
      * monolithic step has that of its whole energy, mismatch included
      * (the merit function of its acceptance).
