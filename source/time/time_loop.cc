@@ -6,6 +6,7 @@
 #include <optional>
 #include <phasefield/core/block_vector_tools.h>
 #include <phasefield/core/stop_request.h>
+#include <phasefield/schemes/energy_term_registry.h>
 #include <phasefield/time/checkpoint.h>
 #include <phasefield/time/finite_fields.h>
 #include <phasefield/time/time_loop.h>
@@ -169,6 +170,7 @@ namespace PhaseField
                                      "residual_norm"},
                                     scheme.statistics_columns(),
                                     std::vector<std::string>{"step_halvings"},
+                                    energy_term_columns(client.outer_energy()),
                                     client.extra_columns());
   }
 
@@ -839,6 +841,9 @@ namespace PhaseField
                            report.final_residual_norm},
                           report.counts_of(scheme.statistics_columns()),
                           std::vector<double>{double(halvings)},
+                          energy_term_values(client.outer_energy(),
+                                             discretization.get_operators(),
+                                             state.block(0)),
                           extras));
     pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
           << std::setprecision(5) << time << "  newton "

@@ -11,6 +11,7 @@
 #include <phasefield/core/statistics.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/energies.h>
+#include <phasefield/schemes/outer_energy.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/time/checkpoint.h>
 #include <phasefield/time/start_value_predictor.h>
@@ -200,6 +201,17 @@ namespace PhaseField
         (void)state;
         (void)energies;
         return {};
+      }
+
+      /**
+       * The outer energy of the problem's scheme: its model terms write
+       * their statistics columns (energy_term_columns()) before
+       * extra_columns(). Default: none.
+       */
+      virtual OuterEnergy
+      outer_energy() const
+      {
+        return OuterEnergy();
       }
     };
 
