@@ -225,9 +225,9 @@ namespace PhaseField
 
     /**
      * @p g += @p factor times the gradient of the outer energy's terms
-     * beyond the distance and Willmore terms (make_outer_energy_terms(), the
-     * registered terms: area, forcing; and the data term, make_data_term()) at
-     * @p u: part of R_U.
+     * beyond the distance and Willmore terms (make_outer_energy_terms():
+     * area, forcing, registered terms; and the data term, make_data_term())
+     * at @p u: part of R_U.
      */
     void
     add_terms_gradient(const Vector &u, const double factor, Vector &g) const;
