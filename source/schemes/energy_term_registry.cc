@@ -160,6 +160,25 @@ namespace PhaseField
     {
       return entry.statistics_3d;
     }
+
+
+    template <int dim>
+    const TermEnergy<dim> &
+    energy(const ModelTermEntry &entry);
+
+    template <>
+    const TermEnergy<2> &
+    energy<2>(const ModelTermEntry &entry)
+    {
+      return entry.energy_2d;
+    }
+
+    template <>
+    const TermEnergy<3> &
+    energy<3>(const ModelTermEntry &entry)
+    {
+      return entry.energy_3d;
+    }
   } // namespace
 
 
@@ -174,6 +193,7 @@ namespace PhaseField
     AssertThrow(!entry.name.empty() &&
                   bool(entry.create_2d) == bool(entry.create_3d) &&
                   bool(entry.statistics_2d) == bool(entry.statistics_3d) &&
+                  bool(entry.energy_2d) == bool(entry.energy_3d) &&
                   (entry.statistics_columns.empty() || entry.statistics_2d),
                 ExcMessage("A model term entry needs a name, and factories "
                            "and statistics in 2D and 3D or in neither."));
@@ -230,6 +250,21 @@ namespace PhaseField
 
 
   template <int dim>
+  double
+  registered_terms_energy(const OuterEnergy          &outer,
+                          const LumpedOperators<dim> &operators,
+                          const Vector               &u)
+  {
+    double sum = 0;
+    for (const ModelTermEntry &entry : registered_model_terms())
+      if (energy<dim>(entry) && is_present(entry, outer))
+        sum += energy<dim>(entry)(outer, operators, u);
+    return sum;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   energy_term_values(const OuterEnergy          &outer,
                      const LumpedOperators<dim> &operators,
@@ -262,6 +297,14 @@ namespace PhaseField
                           const LumpedOperators<3> &,
                           const double,
                           const double);
+  template double
+  registered_terms_energy(const OuterEnergy &,
+                          const LumpedOperators<2> &,
+                          const Vector &);
+  template double
+  registered_terms_energy(const OuterEnergy &,
+                          const LumpedOperators<3> &,
+                          const Vector &);
   template std::vector<double>
   energy_term_values(const OuterEnergy &,
                      const LumpedOperators<2> &,

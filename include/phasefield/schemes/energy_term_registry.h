@@ -46,6 +46,14 @@ namespace PhaseField
                                       const Vector &)>;
 
   /**
+   * The value of a term in the energy law at the phase field U in the
+   * units of Energies::data_term: (outer, operators, U).
+   */
+  template <int dim>
+  using TermEnergy = std::function<
+    double(const OuterEnergy &, const LumpedOperators<dim> &, const Vector &)>;
+
+  /**
    * One model term. An energy term has factories (the nested step and the
    * augmented Lagrangian add its value, gradient and Hessian product); a
    * model property (fixed U values, no double well, a Willmore weight
@@ -77,6 +85,14 @@ namespace PhaseField
     /** The values of statistics_columns. */
     TermStatistics<2> statistics_2d;
     TermStatistics<3> statistics_3d;
+    /**
+     * The term's value T in the energy law of the nested step, in thesis
+     * units (a step of size tau minimises eps ||U-U^k||^2 + 2 tau (... +
+     * T), Energies::registered_terms); empty for the built-in terms, which
+     * enter it by weighted_regularisation() or not at all.
+     */
+    TermEnergy<2> energy_2d;
+    TermEnergy<3> energy_3d;
 
     /**
      * The factories are @p factory, a generic lambda (outer, operators,
@@ -102,6 +118,18 @@ namespace PhaseField
       statistics_columns = columns;
       statistics_2d      = values;
       statistics_3d      = values;
+    }
+
+    /**
+     * The value in the energy law is @p energy, a generic lambda (outer,
+     * operators, U) -> double.
+     */
+    template <typename Energy>
+    void
+    set_energy(const Energy &energy)
+    {
+      energy_2d = energy;
+      energy_3d = energy;
     }
   };
 
@@ -138,6 +166,16 @@ namespace PhaseField
   /** The statistics columns of the terms that @p outer has. */
   std::vector<std::string>
   energy_term_columns(const OuterEnergy &outer);
+
+  /**
+   * The sum of the energy-law values (ModelTermEntry::energy_2d) of the
+   * terms that @p outer has at the phase field @p u.
+   */
+  template <int dim>
+  double
+  registered_terms_energy(const OuterEnergy          &outer,
+                          const LumpedOperators<dim> &operators,
+                          const Vector               &u);
 
   /** The values of energy_term_columns() at the phase field @p u. */
   template <int dim>
