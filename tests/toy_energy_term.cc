@@ -111,7 +111,7 @@ namespace
    * Step 3 of the recipe: the entry: a step of size tau minimises
    * eps ||U - U^k||^2 + 2 tau (... + T[U]), so the factory makes
    * (tau / eps) T in the units of the residual; the column toy_energy
-   * is T itself.
+   * and the value in the energy law are T itself.
    */
   ModelTermEntry
   toy_entry()
@@ -128,6 +128,10 @@ namespace
       {"toy_energy"},
       [](const OuterEnergy &outer, const auto &operators, const Vector &u) {
         return std::vector<double>{make_toy(outer, operators, 1.)->value(u)};
+      });
+    entry.set_energy(
+      [](const OuterEnergy &outer, const auto &operators, const Vector &u) {
+        return make_toy(outer, operators, 1.)->value(u);
       });
     return entry;
   }
