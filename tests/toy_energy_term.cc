@@ -25,7 +25,6 @@
 namespace
 {
   using namespace PhaseField;
-  using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
   /** Step 1 of the recipe: the term's name and its data. */
   const std::string toy_name = "toy term";
