@@ -11,8 +11,9 @@
 //   it.
 // - willmore_flow's problem class with the toy's data in its outer energy
 //   for 2 steps of a circle: the toy_energy column is written, the steps
-//   converge, and T falls from step to step (c = 1 pulls U outwards), as
-//   it does not without the term (the column is then absent).
+//   converge, T falls from step to step (c = -1, the inside phase, pulls
+//   U inwards: the circle grows), and the inside measure grows more than
+//   without the term (the column is then absent).
 
 #include "adaptive_test_mesh.h"
 #include "tests.h"
@@ -146,7 +147,7 @@ namespace
     scheme_outer_energy() const override
     {
       OuterEnergy outer = WillmoreProblem<2>::scheme_outer_energy();
-      outer.registered_terms[toy_name] = ToyData{0.5, 1};
+      outer.registered_terms[toy_name] = ToyData{0.5, -1};
       return outer;
     }
   };
@@ -283,8 +284,8 @@ main(int argc, char **argv)
 
   std::vector<std::string> header, plain_header;
   const auto               rows = run<ToyProblem>(header, "results");
-  run<WillmoreProblem<2>>(plain_header, "results_plain");
-  const int toy = Testing::column(header, "toy_energy");
+  const auto plain = run<WillmoreProblem<2>>(plain_header, "results_plain");
+  const int  toy   = Testing::column(header, "toy_energy");
   Testing::log() << "toy_energy column: " << (toy >= 0 ? "yes" : "NO")
                  << ", without the term: "
                  << (Testing::column(plain_header, "toy_energy") >= 0 ? "YES" :
@@ -299,10 +300,14 @@ main(int argc, char **argv)
                  << std::endl;
   const int newton   = Testing::column(header, "newton_iterations");
   const int halvings = Testing::column(header, "step_halvings");
+  const int inside   = Testing::column(header, "inside_measure");
   for (unsigned int i = 1; i < rows.size(); ++i)
     Testing::log() << "step " << rows[i][0] << ": Newton iterations "
                    << rows[i][newton] << ", halvings " << rows[i][halvings]
                    << ", toy energy "
                    << (rows[i][toy] < rows[i - 1][toy] ? "fell" : "ROSE")
-                   << std::endl;
+                   << ", inside measure "
+                   << (rows[i][inside] > plain[i][inside] ? "larger" :
+                                                            "NOT LARGER")
+                   << " than without" << std::endl;
 }
