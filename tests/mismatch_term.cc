@@ -14,7 +14,7 @@
 
 #include <cmath>
 #include <phasefield/geometry/huffman_labeling.h>
-#include <phasefield/schemes/mismatch_term.h>
+#include <phasefield/problems/mismatch_term.h>
 
 using namespace dealii;
 using namespace PhaseField;

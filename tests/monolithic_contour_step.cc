@@ -30,7 +30,7 @@
 #include <deal.II/base/function_lib.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <phasefield/geometry/huffman_labeling.h>
-#include <phasefield/schemes/mismatch_term.h>
+#include <phasefield/problems/mismatch_term.h>
 #include <phasefield/schemes/nested_scheme.h>
 
 using namespace dealii;

@@ -10,7 +10,7 @@
 #include <deal.II/base/point.h>
 #include <phasefield/geometry/huffman_labeling.h>
 #include <phasefield/geometry/shapes.h>
-#include <phasefield/schemes/mismatch_term.h>
+#include <phasefield/problems/mismatch_term.h>
 #include <vector>
 
 namespace Testing

@@ -141,8 +141,7 @@ namespace
   std::string
   terms_message()
   {
-    ModelTerms needed;
-    needed.fixed_values = true;
+    const ModelTerms needed = ModelTerms().with("fixed values");
     try
       {
         check_scheme_terms("toy", needed, "this test");

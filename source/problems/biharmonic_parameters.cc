@@ -197,9 +197,8 @@ namespace PhaseField
     problem.parse_parameters(prm);
     convergence.parse_parameters(prm);
     time.parse_parameters(prm);
-    ModelTerms needed;
-    needed.forcing          = true;
-    needed.biharmonic_model = true;
+    const ModelTerms needed =
+      ModelTerms().with("forcing").with("biharmonic model");
     time.scheme = parse_scheme_parameters(prm, needed, "biharmonic_flow");
     linear_solver.parse_parameters(prm);
     // Validate the step sizes of every level before any computation.

@@ -319,10 +319,10 @@ namespace PhaseField
                                 willmore.mesh.finest_level,
                                 willmore.mesh.coarsest_level);
     time_stepping.parse_parameters(prm);
-    ModelTerms needed;
-    needed.area_term       = true;
-    needed.willmore_weight = true;
-    needed.mismatch_term   = true;
+    const ModelTerms needed = ModelTerms()
+                                .with("area term")
+                                .with("Willmore weight")
+                                .with("mismatch term");
     willmore.model.scheme =
       parse_scheme_parameters(prm, needed, "shape_from_contour");
     // a target shape that cannot be made is a mistake in the file: say so

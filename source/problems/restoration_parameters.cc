@@ -147,9 +147,8 @@ namespace PhaseField
     if (willmore.dimension != 2)
       throw InputError("edge_restoration works in 2D only: <Dimension> must "
                        "be 2.");
-    ModelTerms needed;
-    needed.area_term    = true;
-    needed.fixed_values = true;
+    const ModelTerms needed =
+      ModelTerms().with("area term").with("fixed values");
     willmore.model.scheme =
       parse_scheme_parameters(prm, needed, "edge_restoration");
     const std::string &shape = willmore.geometry.shape;

@@ -76,7 +76,8 @@ namespace PhaseField
 
 
 
-  ForcingTerm::ForcingTerm(const Vector &forcing, const double scale)
+  ForcingEnergyTerm::ForcingEnergyTerm(const Vector &forcing,
+                                       const double  scale)
     : forcing(forcing)
     , scale(scale)
   {}
@@ -84,7 +85,7 @@ namespace PhaseField
 
 
   double
-  ForcingTerm::value(const Vector &u) const
+  ForcingEnergyTerm::value(const Vector &u) const
   {
     return -scale * (forcing * u);
   }
@@ -92,9 +93,9 @@ namespace PhaseField
 
 
   void
-  ForcingTerm::add_gradient(const Vector &,
-                            const double factor,
-                            Vector      &g) const
+  ForcingEnergyTerm::add_gradient(const Vector &,
+                                  const double factor,
+                                  Vector      &g) const
   {
     g.add(-factor * scale, forcing);
   }
@@ -102,10 +103,10 @@ namespace PhaseField
 
 
   void
-  ForcingTerm::add_hessian_vmult(const Vector &,
-                                 const Vector &,
-                                 const double,
-                                 Vector &) const
+  ForcingEnergyTerm::add_hessian_vmult(const Vector &,
+                                       const Vector &,
+                                       const double,
+                                       Vector &) const
   {}
 
 
@@ -171,26 +172,6 @@ namespace PhaseField
 
 
 
-  template <int dim>
-  std::vector<std::unique_ptr<EnergyTerm>>
-  make_outer_energy_terms(const OuterEnergy          &outer,
-                          const LumpedOperators<dim> &operators,
-                          const double                tau,
-                          const double                epsilon)
-  {
-    std::vector<std::unique_ptr<EnergyTerm>> terms;
-    if (outer.area_weight != 0)
-      terms.push_back(std::make_unique<AreaTerm<dim>>(operators,
-                                                      tau * outer.area_weight,
-                                                      epsilon));
-    if (outer.forcing != nullptr)
-      terms.push_back(
-        std::make_unique<ForcingTerm>(*outer.forcing, tau / epsilon));
-    return terms;
-  }
-
-
-
   double
   weighted_regularisation(const OuterEnergy &outer, const Energies &e)
   {
@@ -201,14 +182,4 @@ namespace PhaseField
 
   template class AreaTerm<2>;
   template class AreaTerm<3>;
-  template std::vector<std::unique_ptr<EnergyTerm>>
-  make_outer_energy_terms(const OuterEnergy &,
-                          const LumpedOperators<2> &,
-                          const double,
-                          const double);
-  template std::vector<std::unique_ptr<EnergyTerm>>
-  make_outer_energy_terms(const OuterEnergy &,
-                          const LumpedOperators<3> &,
-                          const double,
-                          const double);
 } // namespace PhaseField

@@ -1,6 +1,6 @@
-#include <array>
 #include <phasefield/schemes/augmented_lagrangian_parameters.h>
 #include <phasefield/schemes/augmented_lagrangian_scheme.h>
+#include <phasefield/schemes/energy_term_registry.h>
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/schemes/scheme_registry.h>
 #include <phasefield/schemes/semi_implicit_scheme.h>
@@ -55,9 +55,8 @@ namespace PhaseField
         "the nested step as the minimisation of an augmented Lagrangian in "
         "(U,V) by a trust-region method (thesis chapter 7; subsection "
         "Augmented Lagrangian).";
-      entry.terms               = ModelTerms::all();
-      entry.terms.mismatch_term = false;
-      entry.matrix_free         = true;
+      entry.terms       = ModelTerms::all().without("mismatch term");
+      entry.matrix_free = true;
       entry.set_factory<AugmentedLagrangianScheme>();
       entry.set_parameters<AugmentedLagrangianParameters>();
       return entry;
@@ -87,17 +86,6 @@ namespace PhaseField
       static std::vector<SchemeEntry> entries = built_in_schemes();
       return entries;
     }
-
-
-
-    /** The members of ModelTerms with their names, in messages and docs. */
-    const std::array<std::pair<bool ModelTerms::*, const char *>, 6>
-      term_names = {{{&ModelTerms::area_term, "area term"},
-                     {&ModelTerms::fixed_values, "fixed values"},
-                     {&ModelTerms::forcing, "forcing"},
-                     {&ModelTerms::biharmonic_model, "biharmonic model"},
-                     {&ModelTerms::willmore_weight, "Willmore weight"},
-                     {&ModelTerms::mismatch_term, "mismatch term"}}};
 
 
 
@@ -142,9 +130,9 @@ namespace PhaseField
       for (const SchemeEntry &entry : registered_schemes())
         {
           std::vector<std::string> taken;
-          for (const auto &[member, name] : term_names)
-            if (entry.terms.*member)
-              taken.emplace_back(name);
+          for (const ModelTermEntry &term : registered_model_terms())
+            if (entry.terms.has(term.name))
+              taken.push_back(term.name);
           text += " " + entry.name + ": " + entry.description + " [" +
                   (taken.empty() ? "none" : join(taken, ", ", ", ")) + "]";
         }
@@ -179,8 +167,7 @@ namespace PhaseField
   ModelTerms::all()
   {
     ModelTerms terms;
-    for (const auto &term : term_names)
-      terms.*(term.first) = true;
+    terms.every = true;
     return terms;
   }
 
@@ -190,13 +177,49 @@ namespace PhaseField
   ModelTerms::needed_by(const SchemeSettings &settings)
   {
     ModelTerms terms;
-    terms.area_term        = settings.outer_energy.area_weight != 0;
-    terms.fixed_values     = settings.outer_energy.fixed_u != nullptr;
-    terms.forcing          = settings.outer_energy.forcing != nullptr;
-    terms.biharmonic_model = !settings.double_well;
-    terms.willmore_weight  = settings.outer_energy.willmore_weight != 1;
-    terms.mismatch_term    = settings.outer_energy.data_term != nullptr;
+    for (const ModelTermEntry &entry : registered_model_terms())
+      if (is_present(entry, settings.outer_energy))
+        terms.with(entry.name);
+    if (!settings.double_well)
+      terms.with("biharmonic model");
     return terms;
+  }
+
+
+
+  ModelTerms &
+  ModelTerms::with(const std::string &name)
+  {
+    bool registered = false;
+    for (const ModelTermEntry &entry : registered_model_terms())
+      registered = registered || entry.name == name;
+    AssertThrow(registered,
+                ExcMessage("There is no model term <" + name + ">."));
+    if (every)
+      names.erase(name);
+    else
+      names.insert(name);
+    return *this;
+  }
+
+
+
+  ModelTerms &
+  ModelTerms::without(const std::string &name)
+  {
+    if (every)
+      names.insert(name);
+    else
+      names.erase(name);
+    return *this;
+  }
+
+
+
+  bool
+  ModelTerms::has(const std::string &name) const
+  {
+    return every != (names.count(name) > 0);
   }
 
 
@@ -205,9 +228,9 @@ namespace PhaseField
   ModelTerms::missing_in(const ModelTerms &offered) const
   {
     std::vector<std::string> missing;
-    for (const auto &[member, name] : term_names)
-      if (this->*member && !(offered.*member))
-        missing.emplace_back(name);
+    for (const ModelTermEntry &entry : registered_model_terms())
+      if (has(entry.name) && !offered.has(entry.name))
+        missing.push_back(entry.name);
     return missing;
   }
 

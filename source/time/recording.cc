@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
+#include <phasefield/schemes/energy_term_registry.h>
 #include <phasefield/time/finite_fields.h>
 #include <phasefield/time/recording.h>
 
@@ -87,6 +88,7 @@ namespace PhaseField
                                      "residual_norm"},
                                     scheme.statistics_columns(),
                                     std::vector<std::string>{"step_halvings"},
+                                    energy_term_columns(client.outer_energy()),
                                     client.extra_columns());
   }
 
@@ -135,6 +137,9 @@ namespace PhaseField
                            report.final_residual_norm},
                           report.counts_of(scheme.statistics_columns()),
                           std::vector<double>{double(halvings)},
+                          energy_term_values(client.outer_energy(),
+                                             discretization.get_operators(),
+                                             state.block(0)),
                           extras));
     print_progress(step, e, report, error, extras, cells);
     if (with_output && settings.vtu_interval > 0 &&

@@ -8,8 +8,8 @@
 #include <phasefield/geometry/huffman_labeling.h>
 #include <phasefield/geometry/images.h>
 #include <phasefield/problems/contour_parameters.h>
+#include <phasefield/problems/mismatch_term.h>
 #include <phasefield/problems/phase_field_problem.h>
-#include <phasefield/schemes/mismatch_term.h>
 #include <string>
 #include <utility>
 #include <vector>

@@ -110,6 +110,13 @@ namespace PhaseField
       return setup.outer_energy;
     }
 
+    /** The outer energy of the scheme (scheme_outer_energy()). */
+    OuterEnergy
+    outer_energy() const override
+    {
+      return scheme_outer_energy();
+    }
+
     /** The first lines of the log: what runs, with which solver. */
     virtual void
     print_header() const;

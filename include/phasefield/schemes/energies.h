@@ -28,6 +28,11 @@ namespace PhaseField
      * without one.
      */
     double data_term = 0;
+    /**
+     * The sum of the values of the registered energy terms in the energy
+     * law (registered_terms_energy()) in thesis units, 0 without any.
+     */
+    double registered_terms = 0;
   };
 
   /**

@@ -16,9 +16,9 @@ namespace PhaseField
    * the phase field U alone: its value, gradient and Hessian-vector
    * product (or a Gauss-Newton product where the Hessian is not defined,
    * gauss_newton()). The nested step adds the terms of its outer energy
-   * (make_outer_energy_terms(): area, forcing) to its residual, outer
-   * energy and Jacobian; the augmented Lagrangian adds them to its
-   * objective; the contour problem's explicit mismatch step (thesis
+   * (make_outer_energy_terms(), energy_term_registry.h: area, forcing) to its
+   * residual, outer energy and Jacobian; the augmented Lagrangian adds them to
+   * its objective; the contour problem's explicit mismatch step (thesis
    * Algorithm 6.1) uses the gradient of MismatchTerm.
    *
    * The Willmore term (mu/2) eps ||(V-U)/ttau||^2 couples U with the
@@ -30,6 +30,17 @@ namespace PhaseField
   {
   public:
     virtual ~EnergyTerm() = default;
+
+    /**
+     * Does the nested step's Jacobian hold the term's Hessian already (in
+     * NestedWeights: the area term; the forcing has none)? Otherwise
+     * NestedPhysics applies its Hessian product matrix-free.
+     */
+    virtual bool
+    in_nested_jacobian() const
+    {
+      return false;
+    }
 
     /** The name, for messages. */
     virtual std::string
@@ -99,6 +110,11 @@ namespace PhaseField
     {
       return "area";
     }
+    bool
+    in_nested_jacobian() const override
+    {
+      return true;
+    }
     double
     value(const Vector &u) const override;
     void
@@ -136,16 +152,21 @@ namespace PhaseField
    * problem, thesis chapter 4), with F = M I_h(f) and s = tau / eps:
    * gradient -s F, Hessian 0.
    */
-  class ForcingTerm : public EnergyTerm
+  class ForcingEnergyTerm : public EnergyTerm
   {
   public:
     /** The term with the nodal forcing @p forcing (referred to). */
-    ForcingTerm(const Vector &forcing, const double scale);
+    ForcingEnergyTerm(const Vector &forcing, const double scale);
 
     std::string
     name() const override
     {
       return "forcing";
+    }
+    bool
+    in_nested_jacobian() const override
+    {
+      return true;
     }
     double
     value(const Vector &u) const override;
@@ -189,6 +210,11 @@ namespace PhaseField
     {
       return term.gauss_newton();
     }
+    bool
+    in_nested_jacobian() const override
+    {
+      return term.in_nested_jacobian();
+    }
     double
     value(const Vector &u) const override;
     void
@@ -224,19 +250,6 @@ namespace PhaseField
                  const Vector      &old_u);
 
 
-
-  /**
-   * The terms of @p outer beyond the distance and Willmore terms for a
-   * step of size @p tau, in the units of the nested step's residual (the
-   * outer energy divided by 2 eps): the area term with s = tau eta and
-   * the forcing with s = tau / eps, where their weights are set.
-   */
-  template <int dim>
-  std::vector<std::unique_ptr<EnergyTerm>>
-  make_outer_energy_terms(const OuterEnergy          &outer,
-                          const LumpedOperators<dim> &operators,
-                          const double                tau,
-                          const double                epsilon);
 
   /**
    * mu W + eta A for the energies @p e with the weights of @p outer: the

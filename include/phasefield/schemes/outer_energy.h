@@ -1,8 +1,11 @@
 #ifndef phasefield_schemes_outer_energy_h
 #define phasefield_schemes_outer_energy_h
 
+#include <any>
 #include <deal.II/base/index_set.h>
+#include <map>
 #include <phasefield/core/linear_algebra.h>
+#include <string>
 
 namespace PhaseField
 {
@@ -60,13 +63,23 @@ namespace PhaseField
     const EnergyTerm *data_term = nullptr;
 
     /**
-     * Are the area term, a data term or fixed U values present? The UU
-     * block of the Jacobian is then not diagonal.
+     * The data of the energy terms registered with register_model_term()
+     * (energy_term_registry.h) by the term's name: what its factory reads
+     * (e.g. its weight, or a pointer to data that its owner keeps up to
+     * date). A registered term without a present() of its own is present
+     * where its name is here.
+     */
+    std::map<std::string, std::any> registered_terms;
+
+    /**
+     * Are the area term, a data term, fixed U values or registered terms
+     * present? The UU block of the Jacobian is then not diagonal.
      */
     bool
     has_restoration_terms() const
     {
-      return area_weight != 0 || fixed_u != nullptr || data_term != nullptr;
+      return area_weight != 0 || fixed_u != nullptr || data_term != nullptr ||
+             !registered_terms.empty();
     }
   };
 } // namespace PhaseField

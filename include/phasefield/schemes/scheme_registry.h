@@ -9,6 +9,7 @@
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,30 +26,21 @@
 namespace PhaseField
 {
   /**
-   * The terms of a model beyond the Willmore flow of the Allen-Cahn phase
-   * field: what a scheme takes (SchemeEntry::terms) or what a problem
-   * needs. The registry checks the one against the other, in
-   * check_scheme_terms() only.
+   * Terms of a model beyond the Willmore flow of the Allen-Cahn phase
+   * field, by the names of their entries in the registry of model terms
+   * (energy_term_registry.h, e.g. "area term", "fixed values"): what a
+   * scheme takes (SchemeEntry::terms) or what a problem needs. The
+   * registry checks the one against the other, in check_scheme_terms()
+   * only.
    */
-  struct ModelTerms
+  class ModelTerms
   {
-    /** The area functional eta a_eps[U] (OuterEnergy::area_weight != 0). */
-    bool area_term = false;
-    /** U held at given values (OuterEnergy::fixed_u, edge restoration). */
-    bool fixed_values = false;
-    /** A forcing (OuterEnergy::forcing, the biharmonic model). */
-    bool forcing = false;
-    /** No double well (SchemeSettings::double_well = false). */
-    bool biharmonic_model = false;
-    /** A Willmore weight mu other than 1 (OuterEnergy::willmore_weight). */
-    bool willmore_weight = false;
+  public:
     /**
-     * The mismatch term of shape from contour, taken between two half
-     * steps of the scheme (thesis Algorithm 6.1).
+     * Every registered term, also those registered later: a scheme that
+     * adds the terms of make_outer_energy_terms() to its step takes every
+     * energy term.
      */
-    bool mismatch_term = false;
-
-    /** Every term. */
     static ModelTerms
     all();
 
@@ -56,12 +48,31 @@ namespace PhaseField
     static ModelTerms
     needed_by(const SchemeSettings &settings);
 
+    /** Add the registered term @p name. */
+    ModelTerms &
+    with(const std::string &name);
+
+    /** Remove the registered term @p name. */
+    ModelTerms &
+    without(const std::string &name);
+
+    /** Is the term @p name here? */
+    bool
+    has(const std::string &name) const;
+
     /**
      * The names of the terms set here and not in @p offered, e.g.
-     * "fixed values" (empty if @p offered has them all).
+     * "fixed values" (empty if @p offered has them all), in the order of
+     * registration.
      */
     std::vector<std::string>
     missing_in(const ModelTerms &offered) const;
+
+  private:
+    /** Every term but those of names (all()), or those of names only. */
+    bool every = false;
+    /** The terms set, or with every those not set. */
+    std::set<std::string> names;
   };
 
   /** Makes a scheme of dimension @p dim (SchemeEntry::set_factory()). */

@@ -4,6 +4,7 @@
 #include <limits>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/schemes/energies.h>
+#include <phasefield/schemes/outer_energy.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <string>
 #include <vector>
@@ -210,6 +211,17 @@ namespace PhaseField
       (void)state;
       (void)energies;
       return {};
+    }
+
+    /**
+     * The outer energy of the problem's scheme: its model terms write
+     * their statistics columns (energy_term_columns()) before
+     * extra_columns(). Default: none.
+     */
+    virtual OuterEnergy
+    outer_energy() const
+    {
+      return OuterEnergy();
     }
   };
 } // namespace PhaseField

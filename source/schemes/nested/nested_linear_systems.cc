@@ -350,10 +350,11 @@ namespace PhaseField
   {
     if (coeff.outer.fixed_u == nullptr)
       return solve_area_system(z, r, dz, solver, shift);
-    AssertThrow(coeff.outer.data_term == nullptr,
+    AssertThrow(coeff.outer.data_term == nullptr &&
+                  coeff.outer.registered_terms.empty(),
                 ExcMessage("The assembled 3-field Jacobian of fixed U "
                            "values has no data term (OuterEnergy::"
-                           "data_term)."));
+                           "data_term) and no registered energy term."));
     AssertThrow(solver.type() == LinearSolverType::direct,
                 ExcMessage("The 3-field Newton system of edge restoration "
                            "needs <Linear solver / Type> = direct (or auto "

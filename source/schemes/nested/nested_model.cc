@@ -1,6 +1,6 @@
 #include <cmath>
 #include <phasefield/core/constants.h>
-#include <phasefield/schemes/energy_terms.h>
+#include <phasefield/schemes/energy_term_registry.h>
 #include <phasefield/schemes/nested/nested_model.h>
 #include <phasefield/schemes/nested/nested_step.h>
 
@@ -112,6 +112,9 @@ namespace PhaseField
     if (settings.outer_energy.data_term != nullptr)
       e.data_term =
         settings.outer_energy.data_term->value(state.block(Field::U));
+    e.registered_terms = registered_terms_energy(settings.outer_energy,
+                                                 ops,
+                                                 state.block(Field::U));
     return e;
   }
 
@@ -132,10 +135,12 @@ namespace PhaseField
   double
   NestedModel<dim>::energy_law_energy(const Energies &energies) const
   {
-    // the data term enters the step's energy as mu W and eta A do in
-    // thesis units, so in geometric units with the factor 3/4
+    // the data term and the registered terms enter the step's energy as
+    // mu W and eta A do in thesis units, so in geometric units with the
+    // factor 3/4
     return weighted_regularisation(settings.outer_energy, energies) +
-           Constants::geometric_unit * energies.data_term;
+           Constants::geometric_unit * energies.data_term +
+           Constants::geometric_unit * energies.registered_terms;
   }
 
 

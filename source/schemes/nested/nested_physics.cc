@@ -1,7 +1,7 @@
 #include <cmath>
 #include <limits>
 #include <phasefield/schemes/energies.h>
-#include <phasefield/schemes/energy_terms.h>
+#include <phasefield/schemes/energy_term_registry.h>
 #include <phasefield/schemes/nested/nested_physics.h>
 
 namespace PhaseField
@@ -210,18 +210,20 @@ namespace PhaseField
           m[i] * (-a * xu + (a + weights.e(v[i], p[i])) * xv);
         y.block(Field::P).begin()[i] += -m[i] * xu;
       }
-    // the data term's Hessian (Gauss-Newton product) matrix-free
+    // the Hessians that J does not hold matrix-free: registered terms
+    // (EnergyTerm::in_nested_jacobian()) and the data term (Gauss-Newton)
+    const auto add_matrix_free = [&](const EnergyTerm &term) {
+      Vector hd(y.block(Field::U));
+      hd = 0;
+      term.add_hessian_vmult(z.block(Field::U), x.block(Field::U), 1., hd);
+      zero_fixed_u(hd);
+      y.block(Field::U) += hd;
+    };
+    for (const auto &term : terms)
+      if (!term->in_nested_jacobian())
+        add_matrix_free(*term);
     if (data_term)
-      {
-        Vector hd(y.block(Field::U));
-        hd = 0;
-        data_term->add_hessian_vmult(z.block(Field::U),
-                                     x.block(Field::U),
-                                     1.,
-                                     hd);
-        zero_fixed_u(hd);
-        y.block(Field::U) += hd;
-      }
+      add_matrix_free(*data_term);
     for (unsigned int b = 0; b < 3; ++b)
       ops.zero_constrained(y.block(b));
   }

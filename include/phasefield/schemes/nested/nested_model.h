@@ -80,8 +80,9 @@ namespace PhaseField
     /**
      * mu W + eta A of a state with the @p energies (the weights of the
      * outer energy, combined by weighted_regularisation()), plus (3/4) d
-     * for a data term d (Energies::data_term): the energy that the step
-     * decreases, in geometric units.
+     * for a data term d (Energies::data_term) and (3/4) T for the
+     * registered terms (Energies::registered_terms): the energy that the
+     * step decreases, in geometric units.
      */
     double
     energy_law_energy(const Energies &energies) const;

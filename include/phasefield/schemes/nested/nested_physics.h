@@ -226,8 +226,8 @@ namespace PhaseField
     /**
      * @p g += @p factor times the gradient of the outer energy's terms
      * beyond the distance and Willmore terms (make_outer_energy_terms():
-     * area, forcing; and the data term, make_data_term()) at @p u: part of
-     * R_U.
+     * area, forcing, registered terms; and the data term, make_data_term())
+     * at @p u: part of R_U.
      */
     void
     add_terms_gradient(const Vector &u, const double factor, Vector &g) const;
@@ -237,8 +237,9 @@ namespace PhaseField
      * to @p d (matrix-free). apply_jacobian() and the assembled 3-field
      * Jacobian (NestedLinearSystems) hold the area term's Hessian in the
      * assembled form M[uu] + tau eta L (NestedWeights::uu());
-     * apply_jacobian() adds the data term's product (a Gauss-Newton product
-     * for the mismatch) matrix-free.
+     * apply_jacobian() adds the products of the other terms
+     * (EnergyTerm::in_nested_jacobian() false: registered terms) and of the
+     * data term (a Gauss-Newton product for the mismatch) matrix-free.
      */
     void
     add_terms_hessian_vmult(const Vector &u,

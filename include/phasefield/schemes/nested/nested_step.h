@@ -140,13 +140,6 @@ namespace PhaseField
       return physics.coefficients();
     }
 
-    /** The physics of the step. */
-    const NestedPhysics<dim> &
-    get_physics() const
-    {
-      return physics;
-    }
-
     /**
      * Tolerance of ||R_P||_{M^-1} in the inner problems of
      * project_and_energy(): round-off is about 1e-15; an inexact V changes

@@ -1,5 +1,5 @@
-#ifndef phasefield_schemes_mismatch_term_h
-#define phasefield_schemes_mismatch_term_h
+#ifndef phasefield_problems_mismatch_term_h
+#define phasefield_problems_mismatch_term_h
 
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/geometry/huffman_labeling.h>

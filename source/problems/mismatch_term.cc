@@ -1,5 +1,5 @@
 #include <cmath>
-#include <phasefield/schemes/mismatch_term.h>
+#include <phasefield/problems/mismatch_term.h>
 
 namespace PhaseField
 {
