@@ -48,7 +48,7 @@ namespace
   settings(const std::string     &scheme,
            const double           h,
            const double           epsilon,
-           const LinearSolverType solver)
+           const SolverChoice    &solver)
   {
     AugmentedLagrangianParameters al;
     al.gradient_tolerance   = al_tolerance;
@@ -63,7 +63,7 @@ namespace
     s.newton.max_damping_steps         = 10;
     s.newton.watchdog_factor           = 1;
     s.newton.max_step_halvings         = 0;
-    s.linear_solver.type               = solver;
+    s.solver                           = solver;
     s.linear_solver.relative_tolerance = 1e-13;
     s.linear_solver.max_iterations     = 1000;
     s.verbose                          = std::getenv("AL_VERBOSE") != nullptr;
@@ -82,7 +82,7 @@ namespace
           const double           radius,
           const double           epsilon,
           const LinearSolverType solver,
-          const OperatorBackend  backend = OperatorBackend::assembled)
+          const std::string     &backend = OperatorBackendNames::assembled)
   {
     const MPI_Comm comm = MPI_COMM_WORLD;
     const double   h    = std::ldexp(1., -int(level));
@@ -90,15 +90,14 @@ namespace
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
     Testing::log() << dim << "D, "
                    << (solver == LinearSolverType::direct      ? "direct" :
-                       backend == OperatorBackend::matrix_free ? "matrix-free" :
-                                                                 "iterative")
+                                                         backend)
                    << std::endl;
 
     typename Discretization<dim>::Settings mesh_settings{};
     mesh_settings.mesh.finest_level = mesh_settings.mesh.coarsest_level = level;
     mesh_settings.mesh.adaptive                                         = false;
     mesh_settings.mesh.stiffness_quadrature = StiffnessQuadrature::gauss;
-    mesh_settings.backend                   = backend;
+    mesh_settings.solver                    = {solver, backend};
     Discretization<dim> discretization(mesh_settings, comm);
     discretization.create_mesh(nullptr, 1.);
     const LumpedOperators<dim> &ops = discretization.get_operators();
@@ -114,7 +113,7 @@ namespace
                                        std::getenv("AL_VERBOSE") != nullptr &&
                                          root);
         auto                     s =
-          create_time_stepping_scheme<dim>(settings(scheme, h, epsilon, solver),
+          create_time_stepping_scheme<dim>(settings(scheme, h, epsilon, discretization.get_settings().solver),
                                            discretization,
                                            quiet);
         TBlockVector state;
@@ -179,5 +178,5 @@ main(int argc, char **argv)
   compare<2>(6, 0.4, 0.0625, LinearSolverType::direct);
   compare<3>(4, 0.35, 0.125, LinearSolverType::iterative);
   compare<3>(
-    4, 0.35, 0.125, LinearSolverType::iterative, OperatorBackend::matrix_free);
+    4, 0.35, 0.125, LinearSolverType::iterative, OperatorBackendNames::matrix_free);
 }

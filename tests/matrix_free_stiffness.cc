@@ -47,10 +47,10 @@ void
 check(const StiffnessQuadrature quadrature, const BoundaryConditions boundary)
 {
   const Testing::AdaptiveTestMesh<dim> assembled(quadrature,
-                                                 OperatorBackend::assembled,
+                                                 OperatorBackendNames::assembled,
                                                  boundary);
   const Testing::AdaptiveTestMesh<dim> matrix_free(quadrature,
-                                                   OperatorBackend::matrix_free,
+                                                   OperatorBackendNames::matrix_free,
                                                    boundary);
   const LumpedOperators<dim>          &a = assembled.operators;
   const LumpedOperators<dim>          &m = matrix_free.operators;
