@@ -45,10 +45,10 @@ namespace
   constexpr double max_cg_per_trust_region = 10;
 
   SchemeSettings
-  settings(const std::string     &scheme,
-           const double           h,
-           const double           epsilon,
-           const SolverChoice    &solver)
+  settings(const std::string  &scheme,
+           const double        h,
+           const double        epsilon,
+           const SolverChoice &solver)
   {
     AugmentedLagrangianParameters al;
     al.gradient_tolerance   = al_tolerance;
@@ -89,8 +89,7 @@ namespace
     const double   tau  = 0.03 * h;
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
     Testing::log() << dim << "D, "
-                   << (solver == LinearSolverType::direct      ? "direct" :
-                                                         backend)
+                   << (solver == LinearSolverType::direct ? "direct" : backend)
                    << std::endl;
 
     typename Discretization<dim>::Settings mesh_settings{};
@@ -112,10 +111,10 @@ namespace
         const ConditionalOStream quiet(std::cout,
                                        std::getenv("AL_VERBOSE") != nullptr &&
                                          root);
-        auto                     s =
-          create_time_stepping_scheme<dim>(settings(scheme, h, epsilon, discretization.get_settings().solver),
-                                           discretization,
-                                           quiet);
+        auto                     s = create_time_stepping_scheme<dim>(
+          settings(scheme, h, epsilon, discretization.get_settings().solver),
+          discretization,
+          quiet);
         TBlockVector state;
         discretization.reinit(state, 3);
         discretization.interpolate(profile, state.block(Field::U));
@@ -177,6 +176,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   compare<2>(6, 0.4, 0.0625, LinearSolverType::direct);
   compare<3>(4, 0.35, 0.125, LinearSolverType::iterative);
-  compare<3>(
-    4, 0.35, 0.125, LinearSolverType::iterative, OperatorBackendNames::matrix_free);
+  compare<3>(4,
+             0.35,
+             0.125,
+             LinearSolverType::iterative,
+             OperatorBackendNames::matrix_free);
 }

@@ -141,8 +141,9 @@ namespace PhaseField
     const std::string &user) const
   {
     if (!operator_backend(settings.solver.backend).assembled_matrix)
-      throw InputError(user + " needs the assembled stiffness matrix, which "
-                              "<Linear solver / Type> = " +
+      throw InputError(user +
+                       " needs the assembled stiffness matrix, which "
+                       "<Linear solver / Type> = " +
                        settings.solver.backend +
                        " does not store: use <Linear solver / Type> = "
                        "iterative or direct, or the nested scheme.");

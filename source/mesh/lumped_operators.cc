@@ -110,8 +110,8 @@ namespace PhaseField
                             lumping_quadrature,
                             update_values | update_JxW_values);
 
-    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
-    dealii::Vector<double> cell_mass(dofs_per_cell);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    dealii::Vector<double>               cell_mass(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     double min_cell_mass = std::numeric_limits<double>::max();
 

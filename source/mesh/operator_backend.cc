@@ -19,9 +19,9 @@ namespace PhaseField
   register_operator_backend(const OperatorBackendEntry &entry)
   {
     AssertThrow(entry.name != "auto" && entry.name != "direct",
-                dealii::ExcMessage("The operator backend name <" +
-                                   entry.name + "> is a value of <Linear "
-                                                "solver / Type> already."));
+                dealii::ExcMessage("The operator backend name <" + entry.name +
+                                   "> is a value of <Linear "
+                                   "solver / Type> already."));
     for (const OperatorBackendEntry &other : backends())
       AssertThrow(other.name != entry.name,
                   dealii::ExcMessage("The operator backend <" + entry.name +

@@ -61,8 +61,8 @@ namespace PhaseField
           setup.stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
             Quadrature<dim>(QGaussLobatto<dim>(2)) :
             Quadrature<dim>(QGauss<dim>(2));
-        const auto   &fe = setup.dof_handler.get_fe();
-        FEValues<dim> fe_values(fe,
+        const auto        &fe = setup.dof_handler.get_fe();
+        FEValues<dim>      fe_values(fe,
                                 quadrature,
                                 update_gradients | update_JxW_values);
         const unsigned int dofs_per_cell = fe.n_dofs_per_cell();

@@ -264,13 +264,14 @@ namespace PhaseField
     uniform_mesh(const unsigned int          level,
                  const BiharmonicParameters &parameters)
     {
-      const BiharmonicBoundaryConditions     bc = parameters.problem.boundary_conditions;
+      const BiharmonicBoundaryConditions bc =
+        parameters.problem.boundary_conditions;
       typename Discretization<dim>::Settings settings{};
-      settings.solver = resolve_solver_choice(
-        parameters.linear_solver,
-        parameters.time.scheme.name,
-        dim,
-        bc == BiharmonicBoundaryConditions::periodic);
+      settings.solver =
+        resolve_solver_choice(parameters.linear_solver,
+                              parameters.time.scheme.name,
+                              dim,
+                              bc == BiharmonicBoundaryConditions::periodic);
       settings.mesh.finest_level = settings.mesh.coarsest_level = level;
       settings.mesh.adaptive                                    = false;
       settings.mesh.stiffness_quadrature = StiffnessQuadrature::gauss;
@@ -330,8 +331,7 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , discretization(
-        uniform_mesh<dim>(level, parameters), mpi_communicator)
+    , discretization(uniform_mesh<dim>(level, parameters), mpi_communicator)
     , exact(BiharmonicSolutions::exact_solution<dim>(
         parameters.problem.boundary_conditions))
     , exact_solution(exact.function())

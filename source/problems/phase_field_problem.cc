@@ -23,8 +23,8 @@ namespace PhaseField
     {
       const MeshParameters                  &mesh = parameters.mesh;
       typename Discretization<dim>::Settings settings;
-      settings.mesh    = mesh;
-      settings.solver  = resolve_solver_choice(parameters.linear_solver,
+      settings.mesh   = mesh;
+      settings.solver = resolve_solver_choice(parameters.linear_solver,
                                               parameters.model.scheme.name,
                                               dim);
       settings.mesh.finest_level =

@@ -302,6 +302,18 @@ namespace PhaseField
   };
 
   /**
+   * The names (`Linear solver / Type` values) of the two operator backends
+   * of the library, which source/mesh/operator_backends.cc registers.
+   */
+  namespace OperatorBackendNames
+  {
+    /** TrilinosStiffness: the assembled matrix, algebraic multigrid. */
+    inline constexpr char assembled[] = "iterative";
+    /** MatrixFreeStiffness: cell by cell, geometric multigrid. */
+    inline constexpr char matrix_free[] = "matrix-free";
+  } // namespace OperatorBackendNames
+
+  /**
    * What `Linear solver / Type` chooses for one run: the solver of the
    * reduced system and the operator backend that applies (and
    * preconditions) the stiffness operator L. resolve_solver_choice() in
@@ -319,18 +331,6 @@ namespace PhaseField
      */
     std::string backend = OperatorBackendNames::assembled;
   };
-
-  /**
-   * The names (`Linear solver / Type` values) of the two operator backends
-   * of the library, which source/mesh/operator_backends.cc registers.
-   */
-  namespace OperatorBackendNames
-  {
-    /** TrilinosStiffness: the assembled matrix, algebraic multigrid. */
-    inline constexpr char assembled[] = "iterative";
-    /** MatrixFreeStiffness: cell by cell, geometric multigrid. */
-    inline constexpr char matrix_free[] = "matrix-free";
-  } // namespace OperatorBackendNames
 
   /**
    * A value of `Linear solver / Type` besides auto and direct: the name of
@@ -357,9 +357,9 @@ namespace PhaseField
      * the matrix-free backend), as written; resolve_solver_choice() makes
      * the SolverChoice of a run from it.
      */
-    std::string type = "auto";
-    double           relative_tolerance;
-    unsigned int     max_iterations;
+    std::string  type = "auto";
+    double       relative_tolerance;
+    unsigned int max_iterations;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

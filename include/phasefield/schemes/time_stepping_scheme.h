@@ -296,9 +296,9 @@ namespace PhaseField
     double epsilon   = 1;
     double inner_tau = 1;
     /** false: the biharmonic model problem (no Psi terms). */
-    bool                   double_well = true;
-    OuterEnergy            outer_energy;
-    NewtonParameters       newton;
+    bool             double_well = true;
+    OuterEnergy      outer_energy;
+    NewtonParameters newton;
     /** Tolerance and iterations of `Linear solver`. */
     LinearSolverParameters linear_solver;
     /**
