@@ -164,8 +164,8 @@ main(int argc, char **argv)
                                      {toy_header, toy, {}});
   Testing::log() << "statistics as with Type = iterative: "
                  << (difference == 0 ? "yes" : "NO") << std::endl;
-  const int energy = Testing::column(header, "weighted_energy");
+  const int energy = Testing::column(header, "willmore_energy");
   for (const auto &row : toy)
-    Testing::log() << "step " << row[0] << ": weighted energy " << row[energy]
+    Testing::log() << "step " << row[0] << ": Willmore energy " << row[energy]
                    << std::endl;
 }
