@@ -27,8 +27,7 @@ namespace Testing
     explicit AdaptiveTestMesh(
       const PhaseField::StiffnessQuadrature stiffness_quadrature =
         PhaseField::StiffnessQuadrature::gauss,
-      const PhaseField::OperatorBackend backend =
-        PhaseField::OperatorBackend::assembled,
+      const std::string &backend = PhaseField::OperatorBackendNames::assembled,
       const PhaseField::BoundaryConditions boundary =
         PhaseField::BoundaryConditions::natural)
       : sphere(center(), 0.3)
@@ -53,11 +52,12 @@ namespace Testing
     /** Levels 2 to 5 (2D) or 4 (3D), band of 1.5 eps. */
     static typename PhaseField::Discretization<dim>::Settings
     settings(const PhaseField::StiffnessQuadrature stiffness_quadrature,
-             const PhaseField::OperatorBackend     backend,
+             const std::string                    &backend,
              const PhaseField::BoundaryConditions  boundary)
     {
       typename PhaseField::Discretization<dim>::Settings s{};
-      s.backend                   = backend;
+      s.solver.type               = PhaseField::LinearSolverType::iterative;
+      s.solver.backend            = backend;
       s.boundary_conditions       = boundary;
       s.mesh.coarsest_level       = 2;
       s.mesh.finest_level         = dim == 2 ? 5 : 4;

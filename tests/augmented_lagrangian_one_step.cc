@@ -45,10 +45,10 @@ namespace
   constexpr double max_cg_per_trust_region = 10;
 
   SchemeSettings
-  settings(const std::string     &scheme,
-           const double           h,
-           const double           epsilon,
-           const LinearSolverType solver)
+  settings(const std::string  &scheme,
+           const double        h,
+           const double        epsilon,
+           const SolverChoice &solver)
   {
     AugmentedLagrangianParameters al;
     al.gradient_tolerance   = al_tolerance;
@@ -63,7 +63,7 @@ namespace
     s.newton.max_damping_steps         = 10;
     s.newton.watchdog_factor           = 1;
     s.newton.max_step_halvings         = 0;
-    s.linear_solver.type               = solver;
+    s.solver                           = solver;
     s.linear_solver.relative_tolerance = 1e-13;
     s.linear_solver.max_iterations     = 1000;
     s.verbose                          = std::getenv("AL_VERBOSE") != nullptr;
@@ -82,23 +82,21 @@ namespace
           const double           radius,
           const double           epsilon,
           const LinearSolverType solver,
-          const OperatorBackend  backend = OperatorBackend::assembled)
+          const std::string     &backend = OperatorBackendNames::assembled)
   {
     const MPI_Comm comm = MPI_COMM_WORLD;
     const double   h    = std::ldexp(1., -int(level));
     const double   tau  = 0.03 * h;
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
     Testing::log() << dim << "D, "
-                   << (solver == LinearSolverType::direct      ? "direct" :
-                       backend == OperatorBackend::matrix_free ? "matrix-free" :
-                                                                 "iterative")
+                   << (solver == LinearSolverType::direct ? "direct" : backend)
                    << std::endl;
 
     typename Discretization<dim>::Settings mesh_settings{};
     mesh_settings.mesh.finest_level = mesh_settings.mesh.coarsest_level = level;
     mesh_settings.mesh.adaptive                                         = false;
     mesh_settings.mesh.stiffness_quadrature = StiffnessQuadrature::gauss;
-    mesh_settings.backend                   = backend;
+    mesh_settings.solver                    = {solver, backend};
     Discretization<dim> discretization(mesh_settings, comm);
     discretization.create_mesh(nullptr, 1.);
     const LumpedOperators<dim> &ops = discretization.get_operators();
@@ -113,10 +111,10 @@ namespace
         const ConditionalOStream quiet(std::cout,
                                        std::getenv("AL_VERBOSE") != nullptr &&
                                          root);
-        auto                     s =
-          create_time_stepping_scheme<dim>(settings(scheme, h, epsilon, solver),
-                                           discretization,
-                                           quiet);
+        auto                     s = create_time_stepping_scheme<dim>(
+          settings(scheme, h, epsilon, discretization.get_settings().solver),
+          discretization,
+          quiet);
         TBlockVector state;
         discretization.reinit(state, 3);
         discretization.interpolate(profile, state.block(Field::U));
@@ -178,6 +176,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   compare<2>(6, 0.4, 0.0625, LinearSolverType::direct);
   compare<3>(4, 0.35, 0.125, LinearSolverType::iterative);
-  compare<3>(
-    4, 0.35, 0.125, LinearSolverType::iterative, OperatorBackend::matrix_free);
+  compare<3>(4,
+             0.35,
+             0.125,
+             LinearSolverType::iterative,
+             OperatorBackendNames::matrix_free);
 }

@@ -92,7 +92,8 @@ check(const unsigned int level)
   settings.mesh.finest_level   = level;
   settings.mesh.adaptive       = true;
   settings.mesh.band_width     = 1.5;
-  settings.backend             = OperatorBackend::matrix_free;
+  settings.solver.type         = LinearSolverType::iterative;
+  settings.solver.backend      = OperatorBackendNames::matrix_free;
   Discretization<dim> discretization(settings, MPI_COMM_WORLD);
   Point<dim>          center;
   for (unsigned int d = 0; d < dim; ++d)

@@ -46,14 +46,12 @@ template <int dim>
 void
 check(const StiffnessQuadrature quadrature, const BoundaryConditions boundary)
 {
-  const Testing::AdaptiveTestMesh<dim> assembled(quadrature,
-                                                 OperatorBackend::assembled,
-                                                 boundary);
-  const Testing::AdaptiveTestMesh<dim> matrix_free(quadrature,
-                                                   OperatorBackend::matrix_free,
-                                                   boundary);
-  const LumpedOperators<dim>          &a = assembled.operators;
-  const LumpedOperators<dim>          &m = matrix_free.operators;
+  const Testing::AdaptiveTestMesh<dim> assembled(
+    quadrature, OperatorBackendNames::assembled, boundary);
+  const Testing::AdaptiveTestMesh<dim> matrix_free(
+    quadrature, OperatorBackendNames::matrix_free, boundary);
+  const LumpedOperators<dim> &a = assembled.operators;
+  const LumpedOperators<dim> &m = matrix_free.operators;
 
   const bool same_dofs = a.locally_owned_dofs == m.locally_owned_dofs &&
                          assembled.constraints.n_constraints() ==

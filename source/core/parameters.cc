@@ -556,23 +556,36 @@ namespace PhaseField
 
 
 
+  std::vector<LinearSolverTypeValue> &
+  linear_solver_type_values()
+  {
+    static std::vector<LinearSolverTypeValue> values;
+    return values;
+  }
+
+
+
   void
   LinearSolverParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Linear solver");
-    prm.declare_entry(
-      "Type",
-      "auto",
-      Patterns::Selection("auto|direct|iterative|matrix-free"),
+    std::string names = "auto|direct";
+    std::string documentation =
       "How the reduced Newton system in V is solved. direct: MUMPS "
-      "(through Trilinos Amesos); iterative: CG preconditioned with "
-      "algebraic multigrid (ML) on the assembled stiffness matrix (memory "
-      "linear in the unknowns); matrix-free: CG with the stiffness operator "
-      "applied cell by cell and preconditioned with geometric multigrid "
-      "(no matrix is stored; the nested and augmented lagrangian schemes); "
-      "auto: direct in 2D; in 3D matrix-free for these two schemes "
-      "(iterative for the semi-implicit scheme and for periodic boundary "
-      "conditions).");
+      "(through Trilinos Amesos);";
+    for (const LinearSolverTypeValue &value : linear_solver_type_values())
+      {
+        names += "|" + value.name;
+        documentation += " " + value.name + ": " + value.documentation + ";";
+      }
+    documentation +=
+      " auto: direct in 2D; in 3D matrix-free for the schemes that run on "
+      "it (iterative for the semi-implicit scheme and for periodic "
+      "boundary conditions).";
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Type",
+                      "auto",
+                      Patterns::Selection(names),
+                      documentation);
     prm.declare_entry("Tolerance",
                       "1e-10",
                       Patterns::Double(0.),
@@ -590,13 +603,7 @@ namespace PhaseField
   LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    const std::string t = prm.get("Type");
-    type =
-      (t == "direct"                          ? LinearSolverType::direct :
-       t == "iterative" || t == "matrix-free" ? LinearSolverType::iterative :
-                                                LinearSolverType::automatic);
-    backend            = t == "matrix-free" ? OperatorBackend::matrix_free :
-                                              OperatorBackend::assembled;
+    type               = prm.get("Type");
     relative_tolerance = prm.get_double("Tolerance");
     max_iterations     = prm.get_integer("Maximum iterations");
     prm.leave_subsection();

@@ -16,6 +16,7 @@
 #include <phasefield/core/statistics.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/mesh/narrow_band.h>
+#include <phasefield/mesh/operator_backend.h>
 
 namespace PhaseField
 {
@@ -118,18 +119,34 @@ namespace PhaseField
     , triangulation(
         mpi_communicator,
         mesh_smoothing<dim>(),
-        settings.backend == OperatorBackend::matrix_free ?
+        operator_backend(settings.solver.backend).multigrid_levels ?
           parallel::distributed::Triangulation<
             dim>::construct_multigrid_hierarchy :
           parallel::distributed::Triangulation<dim>::default_setting)
     , fe(1)
     , dof_handler(triangulation)
   {
-    if (settings.backend == OperatorBackend::matrix_free &&
+    if (operator_backend(settings.solver.backend).multigrid_levels &&
         settings.boundary_conditions == BoundaryConditions::periodic)
-      throw InputError("<Linear solver / Type> = matrix-free does not "
-                       "support periodic boundary conditions: use iterative "
-                       "or direct.");
+      throw InputError("<Linear solver / Type> = " + settings.solver.backend +
+                       " does not support periodic boundary conditions: use "
+                       "iterative or direct.");
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::require_assembled_operators(
+    const std::string &user) const
+  {
+    if (!operator_backend(settings.solver.backend).assembled_matrix)
+      throw InputError(user +
+                       " needs the assembled stiffness matrix, which "
+                       "<Linear solver / Type> = " +
+                       settings.solver.backend +
+                       " does not store: use <Linear solver / Type> = "
+                       "iterative or direct, or the nested scheme.");
   }
 
 
@@ -184,7 +201,7 @@ namespace PhaseField
   Discretization<dim>::setup_dofs()
   {
     dof_handler.distribute_dofs(fe);
-    if (settings.backend == OperatorBackend::matrix_free)
+    if (operator_backend(settings.solver.backend).multigrid_levels)
       dof_handler.distribute_mg_dofs();
 
     IndexSet locally_relevant;
@@ -210,7 +227,7 @@ namespace PhaseField
 
     typename LumpedOperators<dim>::Settings operator_settings;
     operator_settings.stiffness_quadrature = settings.mesh.stiffness_quadrature;
-    operator_settings.backend              = settings.backend;
+    operator_settings.backend              = settings.solver.backend;
     operator_settings.dirichlet =
       settings.boundary_conditions == BoundaryConditions::dirichlet;
     operators.reinit(dof_handler,

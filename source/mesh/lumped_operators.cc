@@ -2,10 +2,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <phasefield/mesh/lumped_operators.h>
-#include <phasefield/mesh/matrix_free_stiffness.h>
+#include <phasefield/mesh/operator_backend.h>
 
 namespace PhaseField
 {
@@ -32,41 +30,22 @@ namespace PhaseField
                                const MPI_Comm  mpi_communicator,
                                const Settings &settings)
   {
-    backend            = settings.backend;
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-
-    if (backend == OperatorBackend::assembled)
-      {
-        DynamicSparsityPattern dsp(locally_relevant_dofs);
-        DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-        SparsityTools::distribute_sparsity_pattern(dsp,
-                                                   locally_owned_dofs,
-                                                   mpi_communicator,
-                                                   locally_relevant_dofs);
-        stiffness_backend.matrix.reinit(locally_owned_dofs,
-                                        locally_owned_dofs,
-                                        dsp,
-                                        mpi_communicator);
-      }
     lumped_mass.reinit(locally_owned_dofs, mpi_communicator);
 
-    const double min_cell_mass =
-      assemble(dof_handler, constraints, settings.stiffness_quadrature);
+    const double min_cell_mass = assemble_mass(dof_handler, constraints);
     set_inverse_lumped_mass(constraints,
                             Utilities::MPI::min(min_cell_mass,
                                                 mpi_communicator));
-    if (backend == OperatorBackend::assembled)
-      stiffness_backend.find_diagonal();
-    else
-      {
-        matrix_free_backend = std::make_shared<MatrixFreeStiffness<dim>>();
-        matrix_free_backend->reinit(dof_handler,
-                                    constraints,
-                                    lumped_mass,
-                                    {settings.stiffness_quadrature,
-                                     settings.dirichlet});
-      }
+    stiffness =
+      operator_backend(settings.backend)
+        .template make_stiffness<dim>()({dof_handler,
+                                         constraints,
+                                         lumped_mass,
+                                         settings.stiffness_quadrature,
+                                         settings.dirichlet,
+                                         mpi_communicator});
   }
 
 
@@ -75,9 +54,24 @@ namespace PhaseField
   const StiffnessOperator &
   LumpedOperators<dim>::stiffness_operator() const
   {
-    if (backend == OperatorBackend::matrix_free)
-      return *matrix_free_backend;
-    return stiffness_backend;
+    Assert(stiffness, ExcInternalError());
+    return *stiffness;
+  }
+
+
+
+  template <int dim>
+  const TrilinosStiffness &
+  LumpedOperators<dim>::assembled_stiffness() const
+  {
+    const auto *assembled =
+      dynamic_cast<const TrilinosStiffness *>(stiffness.get());
+    AssertThrow(assembled != nullptr,
+                ExcMessage(
+                  "This solver needs the assembled stiffness matrix, which "
+                  "`Linear solver / Type = matrix-free` does not store. Use "
+                  "`Linear solver / Type = iterative` or `direct`."));
+    return *assembled;
   }
 
 
@@ -86,12 +80,7 @@ namespace PhaseField
   const TrilinosWrappers::SparseMatrix &
   LumpedOperators<dim>::stiffness_matrix() const
   {
-    AssertThrow(backend == OperatorBackend::assembled,
-                ExcMessage(
-                  "This solver needs the assembled stiffness matrix, which "
-                  "`Linear solver / Type = matrix-free` does not store. Use "
-                  "`Linear solver / Type = iterative` or `direct`."));
-    return stiffness_backend.matrix;
+    return assembled_stiffness().matrix;
   }
 
 
@@ -100,8 +89,7 @@ namespace PhaseField
   void
   LumpedOperators<dim>::release()
   {
-    stiffness_backend.clear();
-    matrix_free_backend.reset();
+    stiffness.reset();
     lumped_mass.clear();
     inverse_lumped_mass.clear();
     std::vector<unsigned int>().swap(constrained_local_indices);
@@ -111,59 +99,37 @@ namespace PhaseField
 
   template <int dim>
   double
-  LumpedOperators<dim>::assemble(const DoFHandler<dim>           &dof_handler,
-                                 const AffineConstraints<double> &constraints,
-                                 const StiffnessQuadrature stiffness_quadrature)
+  LumpedOperators<dim>::assemble_mass(
+    const DoFHandler<dim>           &dof_handler,
+    const AffineConstraints<double> &constraints)
   {
     // Gauss-Lobatto points of Q1 are the vertices: the mass is lumped.
     const QGaussLobatto<dim> lumping_quadrature(2);
-    const Quadrature<dim>    quadrature =
-      stiffness_quadrature == StiffnessQuadrature::gauss_lobatto ?
-           Quadrature<dim>(QGaussLobatto<dim>(2)) :
-           Quadrature<dim>(QGauss<dim>(2));
-    const auto   &fe = dof_handler.get_fe();
-    FEValues<dim> fe_values(fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-    FEValues<dim> fe_lumped(fe,
+    const auto              &fe = dof_handler.get_fe();
+    FEValues<dim>            fe_lumped(fe,
                             lumping_quadrature,
                             update_values | update_JxW_values);
 
-    const unsigned int     dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
-    dealii::Vector<double> cell_mass(dofs_per_cell);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    dealii::Vector<double>               cell_mass(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     double min_cell_mass = std::numeric_limits<double>::max();
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
           fe_lumped.reinit(cell);
-          cell_matrix = 0;
-          cell_mass   = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                cell_matrix(i, j) += fe_values.shape_grad(i, q) *
-                                     fe_values.shape_grad(j, q) *
-                                     fe_values.JxW(q);
+          cell_mass = 0;
           for (unsigned int q = 0; q < lumping_quadrature.size(); ++q)
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               cell_mass(i) += fe_lumped.shape_value(i, q) * fe_lumped.JxW(q);
           min_cell_mass = std::min(min_cell_mass, cell_mass.linfty_norm());
 
           cell->get_dof_indices(dof_indices);
-          if (backend == OperatorBackend::assembled)
-            constraints.distribute_local_to_global(cell_matrix,
-                                                   dof_indices,
-                                                   stiffness_backend.matrix);
           constraints.distribute_local_to_global(cell_mass,
                                                  dof_indices,
                                                  lumped_mass);
         }
-    if (backend == OperatorBackend::assembled)
-      stiffness_backend.matrix.compress(VectorOperation::add);
     lumped_mass.compress(VectorOperation::add);
     return min_cell_mass;
   }
@@ -202,16 +168,16 @@ namespace PhaseField
     const Vector                   &nodal_weight,
     TrilinosWrappers::SparseMatrix &matrix) const
   {
-    const auto &stiffness = stiffness_matrix();
-    if (!share_pattern(matrix, stiffness))
-      matrix.copy_from(stiffness);
-    const CompressedRows l   = compressed_rows(stiffness);
+    const TrilinosStiffness &assembled = assembled_stiffness();
+    if (!share_pattern(matrix, assembled.matrix))
+      matrix.copy_from(assembled.matrix);
+    const CompressedRows l   = compressed_rows(assembled.matrix);
     const CompressedRows out = compressed_rows(matrix);
     const unsigned int   n   = nodal_weight.locally_owned_size();
     for (int k = 0; k < l.offsets[n]; ++k)
       out.values[k] = stiffness_factor * l.values[k];
     for (unsigned int i = 0; i < n; ++i)
-      out.values[stiffness_backend.diagonal_positions[i]] +=
+      out.values[assembled.diagonal_positions[i]] +=
         lumped_mass.begin()[i] * nodal_weight.begin()[i];
   }
 

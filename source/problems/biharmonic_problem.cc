@@ -255,15 +255,23 @@ namespace PhaseField
     constexpr double       newton_relative_tolerance = 1e-10;
     constexpr unsigned int newton_max_iterations     = 2;
 
-    /** The uniform mesh of one level, its boundary conditions and backend. */
+    /**
+     * The uniform mesh of one level, its boundary conditions and the
+     * solver of the parameters.
+     */
     template <int dim>
     typename Discretization<dim>::Settings
-    uniform_mesh(const unsigned int                 level,
-                 const BiharmonicBoundaryConditions bc,
-                 const OperatorBackend              backend)
+    uniform_mesh(const unsigned int          level,
+                 const BiharmonicParameters &parameters)
     {
+      const BiharmonicBoundaryConditions bc =
+        parameters.problem.boundary_conditions;
       typename Discretization<dim>::Settings settings{};
-      settings.backend           = backend;
+      settings.solver =
+        resolve_solver_choice(parameters.linear_solver,
+                              parameters.time.scheme.name,
+                              dim,
+                              bc == BiharmonicBoundaryConditions::periodic);
       settings.mesh.finest_level = settings.mesh.coarsest_level = level;
       settings.mesh.adaptive                                    = false;
       settings.mesh.stiffness_quadrature = StiffnessQuadrature::gauss;
@@ -280,6 +288,7 @@ namespace PhaseField
     template <int dim>
     SchemeSettings
     biharmonic_scheme(const BiharmonicParameters &parameters,
+                      const SolverChoice         &solver,
                       const double                inner_tau,
                       const Vector               *f)
     {
@@ -296,9 +305,8 @@ namespace PhaseField
       s.newton.watchdog_factor    = 1;
       s.newton.max_step_halvings  = 0;
       s.linear_solver             = parameters.linear_solver;
-      s.linear_solver.type =
-        LinearSolver::resolve_type(parameters.linear_solver.type, dim);
-      if (s.linear_solver.type == LinearSolverType::direct)
+      s.solver                    = solver;
+      if (s.solver.type == LinearSolverType::direct)
         {
           s.linear_solver.relative_tolerance = direct_solver_tolerance;
           s.linear_solver.max_iterations     = direct_solver_max_iterations;
@@ -323,16 +331,7 @@ namespace PhaseField
                       pcout,
                       TimerOutput::never,
                       TimerOutput::wall_times)
-    , discretization(
-        uniform_mesh<dim>(level,
-                          parameters.problem.boundary_conditions,
-                          resolve_operator_backend(
-                            parameters.linear_solver,
-                            parameters.time.scheme.name,
-                            dim,
-                            parameters.problem.boundary_conditions ==
-                              BiharmonicBoundaryConditions::periodic)),
-                     mpi_communicator)
+    , discretization(uniform_mesh<dim>(level, parameters), mpi_communicator)
     , exact(BiharmonicSolutions::exact_solution<dim>(
         parameters.problem.boundary_conditions))
     , exact_solution(exact.function())
@@ -349,6 +348,7 @@ namespace PhaseField
     const LumpedOperators<dim> &operators = discretization.get_operators();
     scheme                                = create_time_stepping_scheme<dim>(
       biharmonic_scheme<dim>(biharmonic_parameters,
+                             discretization.get_settings().solver,
                              step_sizes.inner_tau,
                              exact.forced ? &forcing_vector : nullptr),
       discretization,

@@ -23,10 +23,10 @@ namespace PhaseField
     {
       const MeshParameters                  &mesh = parameters.mesh;
       typename Discretization<dim>::Settings settings;
-      settings.mesh    = mesh;
-      settings.backend = resolve_operator_backend(parameters.linear_solver,
-                                                  parameters.model.scheme.name,
-                                                  dim);
+      settings.mesh   = mesh;
+      settings.solver = resolve_solver_choice(parameters.linear_solver,
+                                              parameters.model.scheme.name,
+                                              dim);
       settings.mesh.finest_level =
         std::max(mesh.finest_level, setup.finest_level);
       settings.coarsening_band_factor = setup.coarsening_band_factor;
@@ -66,6 +66,7 @@ namespace PhaseField
     settings.outer_energy  = scheme_outer_energy();
     settings.newton        = parameters.newton;
     settings.linear_solver = parameters.linear_solver;
+    settings.solver        = discretization.get_settings().solver;
     settings.verbose       = parameters.output.verbose;
     scheme = create_time_stepping_scheme<dim>(settings, discretization, pcout);
   }

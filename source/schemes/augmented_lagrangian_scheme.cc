@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <phasefield/mesh/operator_backend.h>
 #include <phasefield/schemes/augmented_lagrangian_scheme.h>
 #include <phasefield/schemes/double_well.h>
 #include <phasefield/solvers/product_form.h>
@@ -353,7 +354,7 @@ namespace PhaseField
     , discretization(discretization)
     , pcout(pcout)
     , model(settings, discretization)
-    , solver_type(LinearSolver::resolve_type(settings.linear_solver.type, dim))
+    , solver_type(settings.solver.type)
     , next_penalty(parameters.initial_penalty)
   {
     if (solver_type == LinearSolverType::direct)
@@ -392,10 +393,10 @@ namespace PhaseField
       "products, Schur-complement preconditioner ";
     if (schur_solver)
       return krylov + "(MUMPS)";
-    return krylov + (discretization.get_settings().backend ==
-                         OperatorBackend::matrix_free ?
-                       "in product form (geometric multigrid, no matrix)" :
-                       "in product form (algebraic multigrid)");
+    return krylov + "in product form (" +
+           operator_backend(settings.solver.backend)
+             .preconditioner_description +
+           ")";
   }
 
 

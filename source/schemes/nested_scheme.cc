@@ -1,5 +1,6 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <optional>
+#include <phasefield/mesh/operator_backend.h>
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/solvers/descent_solver.h>
 #include <phasefield/solvers/newton_solver.h>
@@ -21,7 +22,7 @@ namespace PhaseField
     , pcout(pcout)
     , model(settings, discretization)
     , linear_solver(std::make_unique<LinearSolver>(
-        LinearSolver::resolve_type(settings.linear_solver.type, dim),
+        settings.solver.type,
         settings.linear_solver.relative_tolerance,
         settings.linear_solver.max_iterations,
         /*symmetric=*/true,
@@ -75,10 +76,7 @@ namespace PhaseField
   {
     if (linear_solver->type() == LinearSolverType::direct)
       return "direct (MUMPS)";
-    return discretization.get_settings().backend ==
-               OperatorBackend::matrix_free ?
-             "matrix-free (CG + geometric multigrid)" :
-             "iterative (CG + AMG)";
+    return operator_backend(settings.solver.backend).solver_description;
   }
 
 

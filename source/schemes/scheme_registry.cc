@@ -311,17 +311,21 @@ namespace PhaseField
 
 
 
-  OperatorBackend
-  resolve_operator_backend(const LinearSolverParameters &solver,
-                           const std::string            &scheme,
-                           const int                     dim,
-                           const bool                    periodic)
+  SolverChoice
+  resolve_solver_choice(const LinearSolverParameters &solver,
+                        const std::string            &scheme,
+                        const int                     dim,
+                        const bool                    periodic)
   {
-    if (solver.type != LinearSolverType::automatic)
-      return solver.backend;
-    return dim == 3 && !periodic && scheme_entry(scheme).matrix_free ?
-             OperatorBackend::matrix_free :
-             OperatorBackend::assembled;
+    SolverChoice choice;
+    if (solver.type == "direct" || (solver.type == "auto" && dim == 2))
+      return choice;
+    choice.type    = LinearSolverType::iterative;
+    choice.backend = solver.type != "auto" ? solver.type :
+                     !periodic && scheme_entry(scheme).matrix_free ?
+                                             OperatorBackendNames::matrix_free :
+                                             OperatorBackendNames::assembled;
+    return choice;
   }
 
 

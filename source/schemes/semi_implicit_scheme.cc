@@ -220,11 +220,11 @@ namespace PhaseField
   {
     discretization.require_assembled_operators("The semi-implicit scheme");
     // the Jacobian is not symmetric
-    linear_solver = std::make_unique<LinearSolver>(
-      LinearSolver::resolve_type(settings.linear_solver.type, dim),
-      settings.linear_solver.relative_tolerance,
-      settings.linear_solver.max_iterations,
-      /*symmetric=*/false);
+    linear_solver =
+      std::make_unique<LinearSolver>(settings.solver.type,
+                                     settings.linear_solver.relative_tolerance,
+                                     settings.linear_solver.max_iterations,
+                                     /*symmetric=*/false);
   }
 
 

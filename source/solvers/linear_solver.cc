@@ -24,10 +24,7 @@ namespace PhaseField
     , stale_iteration_limit(stale_iteration_limit == 0 ? max_iterations :
                                                          stale_iteration_limit)
     , tolerance(relative_tolerance)
-  {
-    Assert(type != LinearSolverType::automatic,
-           ExcMessage("Resolve 'auto' before constructing the solver."));
-  }
+  {}
 
 
 

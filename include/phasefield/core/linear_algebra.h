@@ -10,8 +10,13 @@ namespace PhaseField
    * The distributed vector of one scalar Q1 field (its locally owned
    * entries): the one place that names the linear algebra backend of the
    * fields. Everything above mesh/ and solvers/ writes `Vector` and
-   * `BlockVector`; a matrix-free backend with another vector type changes
-   * these two lines.
+   * `BlockVector`. Below them, the assembled backend and the direct solver
+   * read the Epetra vector inside (trilinos_vector() in
+   * StiffnessPlusDiagonal, StiffnessSquare and DirectFactorization) and
+   * the Trilinos matrices multiply it, so another vector type changes
+   * these two lines and those places; MatrixFreeStiffness computes on
+   * deal.II's distributed vectors and copies from and to `Vector` at its
+   * vmult().
    */
   using Vector = dealii::TrilinosWrappers::MPI::Vector;
 

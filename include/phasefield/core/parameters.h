@@ -297,40 +297,69 @@ namespace PhaseField
   /** How the reduced (Schur complement) system is solved. */
   enum class LinearSolverType
   {
-    automatic,
     direct,
     iterative
   };
 
   /**
-   * How the stiffness operator L and its shifted operators f L + D are
-   * applied and preconditioned (the backend of the operator seam).
+   * The names (`Linear solver / Type` values) of the two operator backends
+   * of the library, which source/mesh/operator_backends.cc registers.
    */
-  enum class OperatorBackend
+  namespace OperatorBackendNames
   {
-    /** An assembled Trilinos matrix, algebraic multigrid (ML). */
-    assembled,
-    /** Cell by cell (MatrixFree), geometric multigrid (local smoothing). */
-    matrix_free
+    /** TrilinosStiffness: the assembled matrix, algebraic multigrid. */
+    inline constexpr char assembled[] = "iterative";
+    /** MatrixFreeStiffness: cell by cell, geometric multigrid. */
+    inline constexpr char matrix_free[] = "matrix-free";
+  } // namespace OperatorBackendNames
+
+  /**
+   * What `Linear solver / Type` chooses for one run: the solver of the
+   * reduced system and the operator backend that applies (and
+   * preconditions) the stiffness operator L. resolve_solver_choice() in
+   * schemes/scheme_registry.h makes it from the parameters; the problems
+   * hand it to the mesh (Discretization::Settings) and to the schemes
+   * (SchemeSettings).
+   */
+  struct SolverChoice
+  {
+    LinearSolverType type = LinearSolverType::direct;
+    /**
+     * The name of a registered operator backend
+     * (mesh/operator_backend.h): the `Type` value that selects it with
+     * the iterative solver. The direct solver needs the assembled one.
+     */
+    std::string backend = OperatorBackendNames::assembled;
   };
+
+  /**
+   * A value of `Linear solver / Type` besides auto and direct: the name of
+   * an operator backend and its documentation, which become part of the
+   * parameter's pattern and of its `--help` text.
+   * register_operator_backend() (mesh/operator_backend.h) adds them.
+   */
+  struct LinearSolverTypeValue
+  {
+    std::string name;
+    std::string documentation;
+  };
+
+  /** The registered values, in the order of registration. */
+  std::vector<LinearSolverTypeValue> &
+  linear_solver_type_values();
 
   /** Subsection `Linear solver`. */
   struct LinearSolverParameters
   {
     /**
-     * `Type`: auto, direct, iterative (CG with algebraic multigrid on the
-     * assembled L) or matrix-free (type iterative with the matrix-free
-     * backend).
+     * `Type`: auto, direct, or the name of an operator backend (iterative:
+     * CG with algebraic multigrid on the assembled L; matrix-free: CG on
+     * the matrix-free backend), as written; resolve_solver_choice() makes
+     * the SolverChoice of a run from it.
      */
-    LinearSolverType type;
-    /**
-     * The backend of `Type` = matrix-free or the others; for auto the
-     * problems choose it by dimension and scheme
-     * (resolve_operator_backend() in schemes/scheme_registry.h).
-     */
-    OperatorBackend backend = OperatorBackend::assembled;
-    double           relative_tolerance;
-    unsigned int     max_iterations;
+    std::string  type = "auto";
+    double       relative_tolerance;
+    unsigned int max_iterations;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

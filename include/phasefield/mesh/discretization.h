@@ -59,11 +59,13 @@ namespace PhaseField
       double             coarsening_band_factor = 1;
       BoundaryConditions boundary_conditions    = BoundaryConditions::natural;
       /**
-       * The backend of the stiffness operator (LumpedOperators); the
-       * matrix-free one keeps the levels of the mesh for its geometric
-       * multigrid (not with periodic conditions).
+       * The solver and operator backend of the run
+       * (resolve_solver_choice()): the mesh builds L with the backend
+       * (LumpedOperators) and keeps its levels if the backend needs them
+       * (OperatorBackendEntry::multigrid_levels; not with periodic
+       * conditions).
        */
-      OperatorBackend backend = OperatorBackend::assembled;
+      SolverChoice solver;
     };
 
     Discretization(const Settings &settings, const MPI_Comm mpi_communicator);
@@ -254,19 +256,12 @@ namespace PhaseField
 
     /**
      * Throw an InputError naming @p user (a scheme) unless the stiffness
-     * operator is assembled (Settings::backend): for what multiplies or
-     * factorises the matrix itself. Can be called before create_mesh().
+     * operator is assembled (OperatorBackendEntry::assembled_matrix of
+     * the backend of Settings::solver): for what multiplies or factorises
+     * the matrix itself. Can be called before create_mesh().
      */
     void
-    require_assembled_operators(const std::string &user) const
-    {
-      if (settings.backend != OperatorBackend::assembled)
-        throw InputError(
-          user + " needs the assembled stiffness matrix, which "
-                 "<Linear solver / Type> = matrix-free does not store: use "
-                 "<Linear solver / Type> = iterative or direct, or the nested "
-                 "scheme.");
-    }
+    require_assembled_operators(const std::string &user) const;
 
     /** Number of DoFs of one field. */
     dealii::types::global_dof_index

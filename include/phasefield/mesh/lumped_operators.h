@@ -11,13 +11,11 @@
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/stiffness_operator.h>
 #include <phasefield/mesh/trilinos_stiffness.h>
+#include <string>
 #include <vector>
 
 namespace PhaseField
 {
-  template <int dim>
-  class MatrixFreeStiffness;
-
   /**
    * The two mesh-dependent operators of every scheme in this library, for
    * one scalar Q1 space with hanging-node constraints:
@@ -42,10 +40,11 @@ namespace PhaseField
     {
       StiffnessQuadrature stiffness_quadrature = StiffnessQuadrature::gauss;
       /**
-       * assembled: a Trilinos matrix; matrix_free: MatrixFreeStiffness (no
-       * matrix; the level DoFs of @p dof_handler must be distributed).
+       * The name of the registered operator backend whose factory makes L
+       * (mesh/operator_backend.h); the matrix-free one needs the level DoFs
+       * of the DoF handler distributed.
        */
-      OperatorBackend backend = OperatorBackend::assembled;
+      std::string backend = OperatorBackendNames::assembled;
       /** Homogeneous Dirichlet conditions on the whole boundary. */
       bool dirichlet = false;
     };
@@ -62,7 +61,8 @@ namespace PhaseField
            const Settings                          &settings);
 
     /**
-     * reinit() with the assembled backend, L with the rule
+     * reinit() with the assembled backend (TrilinosStiffness), L with the
+     * rule
      * @p stiffness_quadrature.
      */
     void
@@ -129,17 +129,11 @@ namespace PhaseField
     /**
      * The assembled stiffness matrix, for what needs its entries: the
      * direct solvers' matrices (StiffnessSquare, the 3-field Jacobian).
-     * Throws with the matrix-free backend.
+     * Throws unless the backend's L is a TrilinosStiffness
+     * (OperatorBackendEntry::assembled_matrix).
      */
     const dealii::TrilinosWrappers::SparseMatrix &
     stiffness_matrix() const;
-
-    /** The backend of L. */
-    OperatorBackend
-    get_backend() const
-    {
-      return backend;
-    }
 
     /**
      * Add @p values (one per locally owned DoF) to the diagonal of
@@ -167,14 +161,16 @@ namespace PhaseField
 
   private:
     /**
-     * Assemble L (with the rule @p stiffness_quadrature) and M into the
-     * reinitialised matrix and vector; returns the smallest cell mass of
-     * this rank.
+     * Assemble M into the reinitialised vector; returns the smallest cell
+     * mass of this rank.
      */
     double
-    assemble(const dealii::DoFHandler<dim>           &dof_handler,
-             const dealii::AffineConstraints<double> &constraints,
-             const StiffnessQuadrature                stiffness_quadrature);
+    assemble_mass(const dealii::DoFHandler<dim>           &dof_handler,
+                  const dealii::AffineConstraints<double> &constraints);
+
+    /** The assembled L; throws unless L is one. */
+    const TrilinosStiffness &
+    assembled_stiffness() const;
 
     /**
      * inverse_lumped_mass and constrained_local_indices, with
@@ -185,13 +181,8 @@ namespace PhaseField
       const dealii::AffineConstraints<double> &constraints,
       const double                             min_cell_mass);
 
-    /** L as an assembled Trilinos matrix (the assembled backend). */
-    TrilinosStiffness stiffness_backend;
-
-    /** L cell by cell (the matrix-free backend; null otherwise). */
-    std::shared_ptr<MatrixFreeStiffness<dim>> matrix_free_backend;
-
-    OperatorBackend backend = OperatorBackend::assembled;
+    /** L, made by the backend's factory (null before reinit()). */
+    std::shared_ptr<StiffnessOperator> stiffness;
   };
   /**
    * Epetra's compressed row storage of the locally owned rows of a

@@ -76,8 +76,9 @@ namespace PhaseField
    * the seam between the physics and a linear-algebra backend. Every
    * nonlinear term of the schemes is nodal (lumped mass), so L is the only
    * mesh operator: a backend implements these functions, and the schemes
-   * do not change. The implementation today is TrilinosStiffness (an
-   * assembled Trilinos matrix).
+   * do not change. The implementations are those of the registered
+   * operator backends (mesh/operator_backend.h): TrilinosStiffness (an
+   * assembled Trilinos matrix) and MatrixFreeStiffness (cell by cell).
    */
   class StiffnessOperator
   {

@@ -9,8 +9,9 @@
 namespace PhaseField
 {
   /**
-   * The stiffness operator L as an assembled Trilinos matrix (the backend
-   * of LumpedOperators today). Its shifted operators f L + D are
+   * The stiffness operator L as an assembled Trilinos matrix (the
+   * assembled operator backend, `Linear solver / Type` = iterative or
+   * direct). Its shifted operators f L + D are
    * StiffnessPlusDiagonal, which an algebraic multigrid (ML) can read row
    * by row. The direct solvers and the assembled Jacobians read the
    * matrix itself (LumpedOperators::stiffness_matrix()).

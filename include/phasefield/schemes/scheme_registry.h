@@ -98,7 +98,8 @@ namespace PhaseField
      * Does the scheme run on the matrix-free backend (it only applies the
      * stiffness operator and solves with its shifted operators)? `Linear
      * solver / Type` = auto chooses that backend in 3D for such a scheme
-     * (resolve_operator_backend()).
+     * (resolve_solver_choice()). A scheme that leaves it false gets the
+     * assembled backend under auto.
      */
     bool matrix_free = false;
     /** Declares the scheme's own subsection (empty: it has none). */
@@ -194,19 +195,20 @@ namespace PhaseField
                      const std::string &program = "");
 
   /**
-   * The operator backend of @p solver (`Linear solver / Type`) for the
-   * scheme @p scheme in dimension @p dim: the chosen one, and for `Type` =
-   * auto the matrix-free one in 3D if the scheme runs on it
-   * (SchemeEntry::matrix_free) and the boundary conditions are not
-   * periodic (@p periodic), the assembled one otherwise. The measurements
-   * behind the choice: doc/scaling.md, "Leaner set-up and a direct level
-   * kernel".
+   * The one place that resolves `Linear solver / Type` (@p solver) for the
+   * scheme @p scheme in dimension @p dim: direct is MUMPS on the assembled
+   * backend; the name of an operator backend is the iterative solver on
+   * it; auto is direct in 2D, and in 3D iterative on the matrix-free
+   * backend if the scheme runs on it (SchemeEntry::matrix_free) and the
+   * boundary conditions are not periodic (@p periodic), on the assembled
+   * one otherwise. The measurements behind the choice: doc/scaling.md,
+   * "Leaner set-up and a direct level kernel".
    */
-  OperatorBackend
-  resolve_operator_backend(const LinearSolverParameters &solver,
-                           const std::string            &scheme,
-                           const int                     dim,
-                           const bool                    periodic = false);
+  SolverChoice
+  resolve_solver_choice(const LinearSolverParameters &solver,
+                        const std::string            &scheme,
+                        const int                     dim,
+                        const bool                    periodic = false);
 
   /**
    * The scheme @p settings.scheme on @p discretization, which must outlive

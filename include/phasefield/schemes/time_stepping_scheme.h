@@ -296,11 +296,18 @@ namespace PhaseField
     double epsilon   = 1;
     double inner_tau = 1;
     /** false: the biharmonic model problem (no Psi terms). */
-    bool                   double_well = true;
-    OuterEnergy            outer_energy;
-    NewtonParameters       newton;
+    bool             double_well = true;
+    OuterEnergy      outer_energy;
+    NewtonParameters newton;
+    /** Tolerance and iterations of `Linear solver`. */
     LinearSolverParameters linear_solver;
-    bool                   verbose = false;
+    /**
+     * The solver and backend that `Linear solver / Type` resolved to
+     * (resolve_solver_choice()), the same as the mesh's
+     * (Discretization::Settings::solver).
+     */
+    SolverChoice solver;
+    bool         verbose = false;
 
     /**
      * The scheme's own parameters, of the type @p Parameters that its

@@ -90,15 +90,6 @@ namespace PhaseField
                  const unsigned int stale_iteration_limit = 0);
     ~LinearSolver();
 
-    /** `automatic`: direct (MUMPS) in 2D, iterative in 3D. */
-    static LinearSolverType
-    resolve_type(const LinearSolverType type, const int dim)
-    {
-      if (type != LinearSolverType::automatic)
-        return type;
-      return dim == 2 ? LinearSolverType::direct : LinearSolverType::iterative;
-    }
-
     /**
      * Factorise @p matrix now (direct type): with set_constant_matrix(),
      * every following solve() applies this factorisation once. A matrix
