@@ -19,7 +19,7 @@ namespace PhaseField
   /**
    * The checkpoints of the time loop (checkpoint.h): writing one after a
    * step and continuing from it, loading the newest one with the checks
-   * of its parameters and time, and the stop on SIGTERM or SIGINT.
+   * of its parameters and time, and the stop on SIGTERM, SIGINT or SIGHUP.
    */
   template <int dim>
   class Checkpointing
@@ -58,7 +58,7 @@ namespace PhaseField
                      const bool         finished);
 
     /**
-     * At the end of step @p step (not the last one): if SIGTERM or SIGINT
+     * At the end of step @p step (not the last one): if SIGTERM, SIGINT or SIGHUP
      * reached any rank (stop_requested()), write the checkpoint of
      * @p state if checkpoints are on and @p checkpoint_written is false,
      * and throw a StopRequest on every rank that says so.
