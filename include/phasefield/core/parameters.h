@@ -205,7 +205,7 @@ namespace PhaseField
     /**
      * `Time stepping / Largest inside change factor`: a step whose result
      * has an inside measure more than this factor larger or smaller than
-     * before the step is rejected and halved (TimeLoop::rejection()); 0:
+     * before the step is rejected and halved (StepAttempt::rejection()); 0:
      * no limit.
      */
     double max_inside_change_factor;
