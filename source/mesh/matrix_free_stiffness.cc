@@ -1,4 +1,3 @@
-#include <algorithm>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -26,6 +25,8 @@ namespace PhaseField
     cells          = Q1Cells<dim>(dofs, c);
     cell_stiffness = std::make_unique<const Q1CellStiffness<dim, double>>(
       stiffness_rule(settings.stiffness_quadrature));
+    src_fine.reinit(cells.partitioner);
+    dst_fine.reinit(cells.partitioner);
     compute_constrained_diagonal();
   }
 
@@ -35,7 +36,8 @@ namespace PhaseField
   std::size_t
   MatrixFreeStiffness<dim>::memory_consumption() const
   {
-    return cells.memory_consumption() + ghost_values.memory_consumption() +
+    return cells.memory_consumption() + src_fine.memory_consumption() +
+           dst_fine.memory_consumption() +
            constrained_diagonal.capacity() *
              sizeof(std::pair<unsigned int, double>) +
            multigrid_memory_consumption();
@@ -57,8 +59,9 @@ namespace PhaseField
   MatrixFreeStiffness<dim>::clear()
   {
     hierarchy.reset();
-    cells        = Q1Cells<dim>();
-    ghost_values = Q1GhostValues<double>();
+    cells = Q1Cells<dim>();
+    src_fine.reinit(0);
+    dst_fine.reinit(0);
     std::vector<std::pair<unsigned int, double>>().swap(constrained_diagonal);
   }
 
@@ -130,19 +133,23 @@ namespace PhaseField
 
   template <int dim>
   void
+  MatrixFreeStiffness<dim>::vmult(FineVector &dst, const FineVector &src) const
+  {
+    dst = 0.;
+    cells.apply_add(*cell_stiffness, 1., src, dst);
+    for (const auto &[i, a_ii] : constrained_diagonal)
+      dst.local_element(i) = a_ii * src.local_element(i);
+  }
+
+
+
+  template <int dim>
+  void
   MatrixFreeStiffness<dim>::vmult(Vector &dst, const Vector &src) const
   {
-    Assert(!src.has_ghost_elements() && !dst.has_ghost_elements(),
-           ExcMessage("The operator reads and writes owned values only."));
-    AssertDimension(src.locally_owned_size(),
-                    cells.partitioner->locally_owned_size());
-    AssertDimension(dst.locally_owned_size(),
-                    cells.partitioner->locally_owned_size());
-    std::fill(dst.begin(), dst.end(), 0.);
-    cells.apply_add(
-      *cell_stiffness, 1., src.begin(), dst.begin(), ghost_values);
-    for (const auto &[i, a_ii] : constrained_diagonal)
-      dst.begin()[i] = a_ii * src.begin()[i];
+    copy_owned(src, src_fine);
+    vmult(dst_fine, src_fine);
+    copy_owned(dst_fine, dst);
   }
 
 

@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <deal.II/base/array_view.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <phasefield/core/constants.h>
 #include <phasefield/mesh/q1_cells.h>
@@ -28,41 +27,6 @@ namespace PhaseField
             return false;
       return true;
     }
-
-
-
-    /** The values of a vector with owned and ghost entries in one array. */
-    template <typename Number>
-    struct ContiguousValues
-    {
-      Number *values;
-
-      Number &
-      operator[](const unsigned int i) const
-      {
-        return values[i];
-      }
-    };
-
-
-
-    /**
-     * The values of a vector whose owned and ghost entries lie in two
-     * arrays: local index i < n_owned is owned[i], else ghost[i - n_owned].
-     */
-    template <typename Number>
-    struct SplitValues
-    {
-      Number            *owned;
-      Number            *ghost;
-      const unsigned int n_owned;
-
-      Number &
-      operator[](const unsigned int i) const
-      {
-        return i < n_owned ? owned[i] : ghost[i - n_owned];
-      }
-    };
   } // namespace
 
 
@@ -161,65 +125,40 @@ namespace PhaseField
 
 
   template <int dim>
-  template <typename Number, typename Source>
+  template <typename Number>
   Number
-  Q1Cells<dim>::read(const unsigned int dof, const Source &src) const
+  Q1Cells<dim>::read(
+    const unsigned int                                dof,
+    const LinearAlgebra::distributed::Vector<Number> &src) const
   {
     if ((dof & constrained_mark) == 0)
-      return src[dof];
+      return src.local_element(dof);
     const unsigned int k     = dof & ~constrained_mark;
     Number             value = 0;
     for (unsigned int e = constraint_start[k]; e < constraint_start[k + 1]; ++e)
       value += static_cast<Number>(constraint_entries[e].second) *
-               src[constraint_entries[e].first];
+               src.local_element(constraint_entries[e].first);
     return value;
   }
 
 
 
   template <int dim>
-  template <typename Number, typename Destination>
+  template <typename Number>
   void
-  Q1Cells<dim>::add(const unsigned int dof,
-                    const Number       value,
-                    const Destination &dst) const
+  Q1Cells<dim>::add(const unsigned int                          dof,
+                    const Number                                value,
+                    LinearAlgebra::distributed::Vector<Number> &dst) const
   {
     if ((dof & constrained_mark) == 0)
       {
-        dst[dof] += value;
+        dst.local_element(dof) += value;
         return;
       }
     const unsigned int k = dof & ~constrained_mark;
     for (unsigned int e = constraint_start[k]; e < constraint_start[k + 1]; ++e)
-      dst[constraint_entries[e].first] +=
+      dst.local_element(constraint_entries[e].first) +=
         static_cast<Number>(constraint_entries[e].second) * value;
-  }
-
-
-
-  template <int dim>
-  template <typename Number, typename Source, typename Destination>
-  void
-  Q1Cells<dim>::add_cell_products(const Q1CellStiffness<dim, Number> &kernel,
-                                  const Number                        factor,
-                                  const Source                       &src,
-                                  const Destination                  &dst) const
-  {
-    std::vector<Number> scale(level_scale.size());
-    for (unsigned int level = 0; level < scale.size(); ++level)
-      scale[level] = factor * level_scale[level];
-
-    const std::size_t n_cells = cell_level.size();
-    for (std::size_t cell = 0; cell < n_cells; ++cell)
-      {
-        const unsigned int *cell_dofs = dofs.data() + cell * n;
-        Number              values[n];
-        for (unsigned int i = 0; i < n; ++i)
-          values[i] = read<Number>(cell_dofs[i], src);
-        kernel.apply(values, scale[cell_level[cell]]);
-        for (unsigned int i = 0; i < n; ++i)
-          add(cell_dofs[i], values[i], dst);
-      }
   }
 
 
@@ -240,63 +179,25 @@ namespace PhaseField
     const bool had_ghosts = src.has_ghost_elements();
     src.update_ghost_values();
     dst.zero_out_ghost_values();
-    add_cell_products(kernel,
-                      factor,
-                      ContiguousValues<const Number>{src.begin()},
-                      ContiguousValues<Number>{dst.begin()});
+    std::vector<Number> scale(level_scale.size());
+    for (unsigned int level = 0; level < scale.size(); ++level)
+      scale[level] = factor * level_scale[level];
+
+    const std::size_t n_cells = cell_level.size();
+    for (std::size_t cell = 0; cell < n_cells; ++cell)
+      {
+        const unsigned int *cell_dofs = dofs.data() + cell * n;
+        Number              values[n];
+        for (unsigned int i = 0; i < n; ++i)
+          values[i] = read(cell_dofs[i], src);
+        kernel.apply(values, scale[cell_level[cell]]);
+        for (unsigned int i = 0; i < n; ++i)
+          add(cell_dofs[i], values[i], dst);
+      }
+
     dst.compress(VectorOperation::add);
     if (!had_ghosts)
       src.zero_out_ghost_values();
-  }
-
-
-
-  template <int dim>
-  template <typename Number>
-  void
-  Q1Cells<dim>::apply_add(const Q1CellStiffness<dim, Number> &kernel,
-                          const Number                        factor,
-                          const Number                       *src,
-                          Number                             *dst,
-                          Q1GhostValues<Number>              &ghosts) const
-  {
-    const unsigned int n_owned = partitioner->locally_owned_size();
-    ghosts.src.resize(partitioner->n_ghost_indices());
-    ghosts.dst.assign(partitioner->n_ghost_indices(), Number());
-    ghosts.import.resize(partitioner->n_import_indices());
-    // the exchanges of LinearAlgebra::distributed::Vector's
-    // update_ghost_values() and compress(add), on the owned values in place
-    const ArrayView<Number> import = make_array_view(ghosts.import);
-    if (partitioner->n_ghost_indices() > 0 ||
-        partitioner->n_import_indices() > 0)
-      {
-        partitioner->export_to_ghosted_array_start<Number>(
-          0,
-          ArrayView<const Number>(src, n_owned),
-          import,
-          make_array_view(ghosts.src),
-          ghosts.requests);
-        partitioner->export_to_ghosted_array_finish(make_array_view(ghosts.src),
-                                                    ghosts.requests);
-      }
-    add_cell_products(kernel,
-                      factor,
-                      SplitValues<const Number>{src,
-                                                ghosts.src.data(),
-                                                n_owned},
-                      SplitValues<Number>{dst, ghosts.dst.data(), n_owned});
-    partitioner->import_from_ghosted_array_start<Number>(VectorOperation::add,
-                                                         0,
-                                                         make_array_view(
-                                                           ghosts.dst),
-                                                         import,
-                                                         ghosts.requests);
-    partitioner->import_from_ghosted_array_finish<Number>(
-      VectorOperation::add,
-      ArrayView<const Number>(ghosts.import.data(), ghosts.import.size()),
-      ArrayView<Number>(dst, n_owned),
-      make_array_view(ghosts.dst),
-      ghosts.requests);
   }
 
 
@@ -326,18 +227,6 @@ namespace PhaseField
                         const float,
                         const LinearAlgebra::distributed::Vector<float> &,
                         LinearAlgebra::distributed::Vector<float> &) const;
-  template void
-  Q1Cells<2>::apply_add(const Q1CellStiffness<2, double> &,
-                        const double,
-                        const double *,
-                        double *,
-                        Q1GhostValues<double> &) const;
-  template void
-  Q1Cells<3>::apply_add(const Q1CellStiffness<3, double> &,
-                        const double,
-                        const double *,
-                        double *,
-                        Q1GhostValues<double> &) const;
   template void
   Q1Cells<2>::apply_add(const Q1CellStiffness<2, double> &,
                         const double,

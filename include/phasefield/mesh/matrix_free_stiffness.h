@@ -24,10 +24,8 @@ namespace PhaseField
    * entry that AffineConstraints::distribute_local_to_global() puts there
    * (the sum of |a_ii| over the cells of the DoF). Its shifted operators
    * f L + D are MatrixFreeShiftedStiffness, preconditioned by
-   * GeometricMultigrid. It reads and writes the locally owned values of
-   * the seam's vectors in place and exchanges only their ghost entries
-   * (Q1Cells::apply_add()). What it keeps per DoF: the cell table (DoF
-   * indices and the level of each cell); no matrix.
+   * GeometricMultigrid. What it keeps per DoF: the cell table (DoF indices
+   * and the level of each cell) and two vectors; no matrix.
    */
   template <int dim>
   class MatrixFreeStiffness : public StiffnessOperator
@@ -79,13 +77,17 @@ namespace PhaseField
                    const Vector      &diagonal,
                    const unsigned int smoother_sweeps) const;
 
-    /** The cell data, the ghost values and the multigrid levels, if built. */
+    /** The cell data, two vectors and the multigrid levels, if built. */
     std::size_t
     memory_consumption() const override;
 
     /** Bytes of the multigrid levels (0 before the first cycle). */
     std::size_t
     multigrid_memory_consumption() const;
+
+    /** @p dst = L @p src on vectors of the matrix-free object. */
+    void
+    vmult(FineVector &dst, const FineVector &src) const;
 
   private:
     /**
@@ -110,8 +112,7 @@ namespace PhaseField
     const Vector                                       *lumped_mass = nullptr;
     Settings                                            settings;
     std::vector<std::pair<unsigned int, double>>        constrained_diagonal;
-    /** The ghost entries of the products: their vectors are not copied. */
-    mutable Q1GhostValues<double> ghost_values;
+    mutable FineVector                                  src_fine, dst_fine;
     /** The level data of the multigrid cycles, built on the first one. */
     mutable std::unique_ptr<MultigridHierarchy<dim>> hierarchy;
   };

@@ -6,38 +6,12 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <memory>
-#include <mpi.h>
 #include <phasefield/mesh/q1_cell_stiffness.h>
 #include <utility>
 #include <vector>
 
 namespace PhaseField
 {
-  /**
-   * The ghost entries of a product of Q1Cells on vectors that keep only
-   * their locally owned values (a Trilinos vector): the values received
-   * for the source, the contributions sent from the destination, and the
-   * packed values of the exchange. Q1Cells::apply_add() sizes them.
-   */
-  template <typename Number>
-  struct Q1GhostValues
-  {
-    std::vector<Number>      src;
-    std::vector<Number>      dst;
-    std::vector<Number>      import;
-    std::vector<MPI_Request> requests;
-
-    /** Bytes of this rank. */
-    std::size_t
-    memory_consumption() const
-    {
-      return (src.capacity() + dst.capacity() + import.capacity()) *
-             sizeof(Number);
-    }
-  };
-
-
-
   /**
    * The locally owned cells of one mesh of axis-parallel cubes as the Q1
    * kernel reads them: the active cells of a DoFHandler, or the cells of
@@ -95,21 +69,6 @@ namespace PhaseField
               const dealii::LinearAlgebra::distributed::Vector<Number> &src,
               dealii::LinearAlgebra::distributed::Vector<Number> &dst) const;
 
-    /**
-     * The same product on the locally owned values @p src and @p dst
-     * (#partitioner's locally owned size each, in its order) of vectors of
-     * another type: the ghost values travel through @p ghosts, and neither
-     * vector is copied. Collective; gives the same result, bit for bit, as
-     * the product on vectors with #partitioner.
-     */
-    template <typename Number>
-    void
-    apply_add(const Q1CellStiffness<dim, Number> &kernel,
-              const Number                        factor,
-              const Number                       *src,
-              Number                             *dst,
-              Q1GhostValues<Number>              &ghosts) const;
-
     /** Bytes of this rank. */
     std::size_t
     memory_consumption() const;
@@ -121,29 +80,18 @@ namespace PhaseField
     /** The mark of a constrained DoF in #dofs: the high bit. */
     static constexpr unsigned int constrained_mark = 1U << 31;
 
-    /**
-     * @p dst += @p factor C^T A C @p src on this rank's cells, without
-     * communication: @p src and @p dst give the value at a local index
-     * (owned or ghost) by operator[].
-     */
-    template <typename Number, typename Source, typename Destination>
-    void
-    add_cell_products(const Q1CellStiffness<dim, Number> &kernel,
-                      const Number                        factor,
-                      const Source                       &src,
-                      const Destination                  &dst) const;
-
     /** The value of @p src at the cell's DoF entry @p dof (C x). */
-    template <typename Number, typename Source>
+    template <typename Number>
     Number
-    read(const unsigned int dof, const Source &src) const;
+    read(const unsigned int                                        dof,
+         const dealii::LinearAlgebra::distributed::Vector<Number> &src) const;
 
     /** Add @p value to @p dst at the cell's DoF entry @p dof (C^T y). */
-    template <typename Number, typename Destination>
+    template <typename Number>
     void
-    add(const unsigned int dof,
-        const Number       value,
-        const Destination &dst) const;
+    add(const unsigned int                                  dof,
+        const Number                                        value,
+        dealii::LinearAlgebra::distributed::Vector<Number> &dst) const;
 
     std::vector<unsigned int>  dofs;
     std::vector<unsigned char> cell_level;
