@@ -27,6 +27,30 @@ namespace PhaseField
             return false;
       return true;
     }
+    /**
+     * The partitioner of the DoFs of @p dof_handler on the multigrid level
+     * @p mg_level (numbers::invalid_unsigned_int: the active mesh): the
+     * locally owned ones and the locally relevant ones as ghosts.
+     */
+    template <int dim>
+    std::shared_ptr<const Utilities::MPI::Partitioner>
+    make_partitioner(const DoFHandler<dim> &dof_handler,
+                     const unsigned int     mg_level)
+    {
+      const bool on_level = mg_level != numbers::invalid_unsigned_int;
+      IndexSet   relevant;
+      if (on_level)
+        DoFTools::extract_locally_relevant_level_dofs(dof_handler,
+                                                      mg_level,
+                                                      relevant);
+      else
+        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      return std::make_shared<const Utilities::MPI::Partitioner>(
+        on_level ? dof_handler.locally_owned_mg_dofs(mg_level) :
+                   dof_handler.locally_owned_dofs(),
+        relevant,
+        dof_handler.get_communicator());
+    }
   } // namespace
 
 
@@ -38,18 +62,7 @@ namespace PhaseField
   {
     const bool     on_level = mg_level != numbers::invalid_unsigned_int;
     const MPI_Comm comm     = dof_handler.get_communicator();
-    IndexSet       relevant;
-    if (on_level)
-      DoFTools::extract_locally_relevant_level_dofs(dof_handler,
-                                                    mg_level,
-                                                    relevant);
-    else
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    partitioner = std::make_shared<const Utilities::MPI::Partitioner>(
-      on_level ? dof_handler.locally_owned_mg_dofs(mg_level) :
-                 dof_handler.locally_owned_dofs(),
-      relevant,
-      comm);
+    partitioner             = make_partitioner(dof_handler, mg_level);
 
     // the constraint number of every constrained DoF met so far
     std::unordered_map<types::global_dof_index, unsigned int> numbered;
