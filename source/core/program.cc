@@ -100,11 +100,12 @@ namespace PhaseField
       if (equals == std::string::npos)
         throw InputError("--set <" + setting +
                          "> is not of the form \"Subsection/Name=value\".");
+      const std::string        key = trim(setting.substr(0, equals));
       std::vector<std::string> path;
-      std::istringstream       parts(setting.substr(0, equals));
+      std::istringstream       parts(key);
       for (std::string part; std::getline(parts, part, '/');)
         path.push_back(trim(part));
-      if (path.empty() || path.back().empty())
+      if (path.empty() || path.back().empty() || key.back() == '/')
         throw InputError("--set <" + setting +
                          "> names no parameter before the \"=\"; use the "
                          "form \"Subsection/Name=value\".");
