@@ -332,6 +332,7 @@ namespace PhaseField
       "rejected likewise. 0: no limit; otherwise at least 1.");
     if (with_step_counts)
       declare_step_counts(prm);
+    StepControlParameters::declare_parameters(prm, with_step_counts);
     prm.leave_subsection();
   }
 
@@ -415,6 +416,7 @@ namespace PhaseField
       with_step_counts ? prm.get_integer("Coarse start level") : 0;
     extrapolated_start =
       with_step_counts ? prm.get_bool("Extrapolated start") : false;
+    step_control.parse_parameters(prm, with_step_counts);
     prm.leave_subsection();
   }
 
@@ -442,6 +444,7 @@ namespace PhaseField
     check_positive(inner_tau,
                    "Time stepping / Inner tau",
                    inner_tau_expression);
+    step_control.evaluate(h, step_size(1));
     // V - U is of the size inner tau / h^2: below this bound it is within
     // 10^4 of the round-off of U, and the curvature (U - V) / inner tau
     // is noise (or not finite: 1e-300 overflowed the inner problem)
@@ -454,6 +457,126 @@ namespace PhaseField
                        " h^2), but must be at least 1e-12 h^2: V - U is of the "
                        "size inner tau / h^2 and would drown in round-off, "
                        "and the residuals of the steps would not be finite.");
+  }
+
+
+
+  void
+  StepControlParameters::declare_parameters(ParameterHandler &prm,
+                                            const bool        with_step_counts)
+  {
+    prm.declare_entry(
+      "Stationary tolerance",
+      "0",
+      Patterns::Double(0),
+      "0: off. > 0: the run (for shape from contour: the level) ends after "
+      "the first step in which the relative change of the energy per unit "
+      "time, |E(k+1) - E(k)| / (tau |E(k+1)|), is below this value, E the "
+      "energy of the scheme's energy law (mu W + eta A; shape from "
+      "contour: the merit function, mismatch included). Needs a scheme "
+      "with an energy law (nested, augmented lagrangian).");
+    if (!with_step_counts)
+      return;
+    prm.declare_entry(
+      "Step control",
+      "fixed",
+      Patterns::Selection("fixed|adaptive"),
+      "fixed: the steps of the schedule (Ramp-up steps, then Tau), as in "
+      "the thesis. adaptive: each step size is chosen so that the "
+      "estimated local error of the step stays below Tolerance (the "
+      "difference of the step to the linear extrapolation of the last two "
+      "steps, scaled to the error of the step; a PI controller chooses the "
+      "next size from it, a step above Tolerance is retried with half the "
+      "size); Tau (or the first ramp-up size) is the first step.");
+    prm.declare_entry(
+      "Tolerance",
+      "1e-4",
+      Patterns::Double(0),
+      "adaptive: the local error one step may make, in the L2 norm of U "
+      "over the domain (U = +-1 away from the interface, so an error e "
+      "moves an interface of length L by about e^2 / (2 L) in the mean).");
+    prm.declare_entry("Smallest step",
+                      "0",
+                      Patterns::Anything(),
+                      "adaptive: the smallest step the control chooses "
+                      "(an expression in h like Tau; 0: no limit). A "
+                      "step at this size is not rejected for its error.");
+    prm.declare_entry("Largest step",
+                      "0",
+                      Patterns::Anything(),
+                      "adaptive: the largest step the control chooses (an "
+                      "expression in h like Tau; 0: no limit).");
+    prm.declare_entry(
+      "End time",
+      "0",
+      Patterns::Anything(),
+      "0: Number of steps (and Ramp-up steps) decide how long the run is. "
+      "> 0: the run ends at this time (an expression in h like Tau), its "
+      "last step shortened to reach it exactly; Number of steps is not "
+      "used.");
+  }
+
+
+
+  void
+  StepControlParameters::parse_parameters(ParameterHandler &prm,
+                                          const bool        with_step_counts)
+  {
+    stationary_tolerance = prm.get_double("Stationary tolerance");
+    if (!with_step_counts)
+      return;
+    control   = prm.get("Step control") == "adaptive" ? StepControl::adaptive :
+                                                        StepControl::fixed;
+    tolerance = prm.get_double("Tolerance");
+    if (control == StepControl::adaptive && !(tolerance > 0))
+      throw InputError("<Time stepping / Step control> = adaptive needs a "
+                       "positive <Time stepping / Tolerance>; it is " +
+                       prm.get("Tolerance") + ".");
+    smallest_step_expression = prm.get("Smallest step");
+    largest_step_expression  = prm.get("Largest step");
+    end_time_expression      = prm.get("End time");
+  }
+
+
+
+  void
+  StepControlParameters::evaluate(const double h, const double tau)
+  {
+    const auto evaluate_non_negative = [h](const std::string &expression,
+                                           const std::string &name) {
+      if (expression.empty())
+        return 0.;
+      const double value =
+        evaluate_expression_in_h(expression, h, "Time stepping / " + name);
+      if (value < 0)
+        throw InputError(
+          "The parameter <Time stepping / " + name + "> = <" + expression +
+          "> evaluates to " + std::to_string(value) +
+          ", but must be positive (or 0: " +
+          (name == "End time" ? "no end time" : "no limit") + ").");
+      return value;
+    };
+    smallest_step =
+      evaluate_non_negative(smallest_step_expression, "Smallest step");
+    largest_step =
+      evaluate_non_negative(largest_step_expression, "Largest step");
+    end_time = evaluate_non_negative(end_time_expression, "End time");
+    if (largest_step > 0 && smallest_step > largest_step)
+      throw InputError(
+        "<Time stepping / Smallest step> = <" + smallest_step_expression +
+        "> = " + std::to_string(smallest_step) +
+        " is larger than <Time stepping / Largest step> = <" +
+        largest_step_expression + "> = " + std::to_string(largest_step) + ".");
+    if (control == StepControl::adaptive &&
+        (tau < smallest_step || (largest_step > 0 && tau > largest_step)))
+      throw InputError(
+        "With <Time stepping / Step control> = adaptive, <Time stepping / "
+        "Tau> is the first step, " +
+        std::to_string(tau) +
+        ", but it lies outside [<Smallest step>, "
+        "<Largest step>] = [" +
+        std::to_string(smallest_step) + ", " + std::to_string(largest_step) +
+        "].");
   }
 
 

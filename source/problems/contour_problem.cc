@@ -527,30 +527,31 @@ namespace PhaseField
     (void)step;
     if (!parameters.time_stepping.step_size_control)
       return;
-    // the factor is relative to the scheduled size (Tau, or a ramp-up
-    // size) that the step's size was made from
-    const double level_tau = last_scheduled;
-    if (tau < tried_tau)
+    // in units of the scheduled size (Tau, or a ramp-up size) that the
+    // step's size was made from
+    const double         level_tau = last_scheduled;
+    const StepSizeLimits limits{min_tau_factor,
+                                parameters.time_stepping.largest_tau_factor};
+    double               factor = 1;
+    if (tau >= tried_tau)
       {
-        tau_factor = std::max(tau / level_tau, min_tau_factor);
-        return;
+        const double decrease =
+          merit(old_state, old_energies) - merit(state, energies);
+        const double dissipation =
+          this->scheme->dissipation(old_state, state, tau);
+        const bool easy =
+          report.newton_iterations <= parameters.time_stepping.easy_iterations;
+        factor = easy && decrease >= 2 * dissipation ? step_growth : 1;
+        if (this->willmore_parameters.output.verbose)
+          this->pcout << "  step size control: decrease " << decrease
+                      << ", dissipation " << dissipation << ", "
+                      << report.newton_iterations << " Newton iterations";
       }
-    const double decrease =
-      merit(old_state, old_energies) - merit(state, energies);
-    const double dissipation = this->scheme->dissipation(old_state, state, tau);
-    const bool   easy =
-      report.newton_iterations <= parameters.time_stepping.easy_iterations;
-    if (easy && decrease >= 2 * dissipation)
-      tau_factor = std::min(step_growth * tau / level_tau,
-                            parameters.time_stepping.largest_tau_factor);
-    else
-      tau_factor = tau / level_tau;
+    else if (this->willmore_parameters.output.verbose)
+      this->pcout << "  step size control: the step was halved";
+    tau_factor = limits.next(tau / level_tau, tried_tau / level_tau, factor);
     if (this->willmore_parameters.output.verbose)
-      this->pcout << "  step size control: decrease " << decrease
-                  << ", dissipation " << dissipation << ", "
-                  << report.newton_iterations
-                  << " Newton iterations: next tau = " << tau_factor << " Tau"
-                  << std::endl;
+      this->pcout << ": next tau = " << tau_factor << " Tau" << std::endl;
   }
 
 

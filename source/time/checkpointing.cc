@@ -28,7 +28,7 @@ namespace PhaseField
     , data(data)
     , step_sizes(step_sizes)
     , remeshing(remeshing)
-    , n_steps(settings.model.n_ramp_steps + settings.model.n_steps)
+    , n_steps(settings.n_steps())
   {}
 
 

@@ -30,7 +30,8 @@ namespace PhaseField
                                   TimeLoopClient<dim>      &client,
                                   const ConditionalOStream &pcout,
                                   TimerOutput              &timer,
-                                  LoopData                 &data)
+                                  LoopData                 &data,
+                                  const StepSizePolicy     &step_sizes)
     : settings(settings)
     , discretization(discretization)
     , scheme(scheme)
@@ -38,6 +39,7 @@ namespace PhaseField
     , pcout(pcout)
     , timer(timer)
     , data(data)
+    , step_sizes(step_sizes)
   {}
 
 
@@ -88,6 +90,7 @@ namespace PhaseField
                                      "residual_norm"},
                                     scheme.statistics_columns(),
                                     std::vector<std::string>{"step_halvings"},
+                                    step_sizes.statistics_columns(),
                                     energy_term_columns(client.outer_energy()),
                                     client.extra_columns());
   }
@@ -102,7 +105,8 @@ namespace PhaseField
                             const StepReport  &report,
                             const double       tau,
                             const unsigned int halvings,
-                            const bool         with_output)
+                            const bool         with_output,
+                            const bool         last)
   {
     data.state_energies = e;
     const double error  = client.l2_error(state, data.time);
@@ -137,13 +141,14 @@ namespace PhaseField
                            report.final_residual_norm},
                           report.counts_of(scheme.statistics_columns()),
                           std::vector<double>{double(halvings)},
+                          step_sizes.statistics_values(),
                           energy_term_values(client.outer_energy(),
                                              discretization.get_operators(),
                                              state.block(0)),
                           extras));
-    print_progress(step, e, report, error, extras, cells);
+    print_progress(step, e, report, error, extras, cells, tau);
     if (with_output && settings.vtu_interval > 0 &&
-        (step % settings.vtu_interval == 0 || step == data.final_step))
+        (step % settings.vtu_interval == 0 || step == data.final_step || last))
       output_results(step, state);
   }
 
@@ -156,7 +161,8 @@ namespace PhaseField
                                     const StepReport          &report,
                                     const double               error,
                                     const std::vector<double> &extras,
-                                    const double               cells) const
+                                    const double               cells,
+                                    const double               tau) const
   {
     pcout << "step " << std::setw(4) << step << "  t = " << std::setw(11)
           << std::setprecision(5) << data.time << "  newton "
@@ -169,6 +175,14 @@ namespace PhaseField
     for (unsigned int i = 0; i < extras.size(); ++i)
       pcout << "  " << extra_names[i] << " = " << std::setprecision(5)
             << extras[i];
+    const std::vector<std::string> policy_names =
+      step_sizes.statistics_columns();
+    if (!policy_names.empty())
+      pcout << "  tau = " << std::setprecision(4) << tau;
+    const std::vector<double> policy_values = step_sizes.statistics_values();
+    for (unsigned int i = 0; i < policy_names.size(); ++i)
+      pcout << "  " << policy_names[i] << " = " << std::setprecision(3)
+            << policy_values[i];
     pcout << "  cells " << cells << "  [" << std::setprecision(3)
           << wall_timer.wall_time() << " s]" << std::endl;
   }

@@ -16,7 +16,7 @@ namespace PhaseField
                             const ConditionalOStream &pcout,
                             TimerOutput              &timer,
                             LoopData                 &data,
-                            const StepSizePolicy     &step_sizes,
+                            StepSizePolicy           &step_sizes,
                             StepAttempt<dim>         &step_attempt)
     : settings(settings)
     , discretization(discretization)
@@ -141,9 +141,21 @@ namespace PhaseField
   std::vector<BlockVector *>
   Remeshing<dim>::with_history(std::vector<BlockVector *> fields)
   {
-    for (BlockVector *v : data.predictor.history())
+    for (BlockVector *v : histories())
       fields.push_back(v);
     return fields;
+  }
+
+
+
+  template <int dim>
+  std::vector<BlockVector *>
+  Remeshing<dim>::histories()
+  {
+    std::vector<BlockVector *> vectors = data.predictor.history();
+    for (BlockVector *v : step_sizes.history())
+      vectors.push_back(v);
+    return vectors;
   }
 
 
@@ -199,7 +211,7 @@ namespace PhaseField
   void
   Remeshing<dim>::distribute_history_constraints()
   {
-    for (BlockVector *v : data.predictor.history())
+    for (BlockVector *v : histories())
       discretization.distribute_constraints(*v);
   }
 

@@ -60,13 +60,15 @@ namespace PhaseField
                                 TimeLoopClient<dim>      &client,
                                 const ConditionalOStream &pcout,
                                 TimerOutput              &timer,
-                                LoopData                 &data)
+                                LoopData                 &data,
+                                const StepSizePolicy     &step_sizes)
     : settings(settings)
     , scheme(scheme)
     , client(client)
     , pcout(pcout)
     , timer(timer)
     , data(data)
+    , step_sizes(step_sizes)
   {}
 
 
@@ -222,7 +224,9 @@ namespace PhaseField
           << ", by more than the factor <Time stepping / Largest inside "
              "change factor> = "
           << factor << " (the solver jumped to another branch)";
-    return why.str();
+    if (!why.str().empty())
+      return why.str();
+    return step_sizes.rejection(data.old_state, state, tau);
   }
 
 

@@ -8,6 +8,15 @@ namespace PhaseField
 {
   using namespace dealii;
 
+  namespace
+  {
+    /**
+     * Relative round-off of the time: a run is at its end time within it,
+     * so that summed step sizes end there, not in a sliver step after it.
+     */
+    constexpr double time_roundoff = 1e-12;
+  } // namespace
+
 
 
   template <int dim>
@@ -22,13 +31,20 @@ namespace PhaseField
     , scheme(scheme)
     , client(client)
     , pcout(pcout)
-    , n_steps(settings.model.n_ramp_steps + settings.model.n_steps)
-    , step_sizes(create_step_size_policy(this->settings,
-                                         [this](const double scheduled) {
-                                           return this->client.next_step_size(
-                                             scheduled);
-                                         }))
-    , step_attempt(this->settings, scheme, client, pcout, timer, data)
+    , n_steps(settings.n_steps())
+    , step_sizes(create_step_size_policy(
+        this->settings,
+        [this](const double scheduled) {
+          return this->client.next_step_size(scheduled);
+        },
+        discretization.get_operators().lumped_mass))
+    , step_attempt(this->settings,
+                   scheme,
+                   client,
+                   pcout,
+                   timer,
+                   data,
+                   *step_sizes)
     , remeshing(this->settings,
                 discretization,
                 scheme,
@@ -44,7 +60,8 @@ namespace PhaseField
                client,
                pcout,
                timer,
-               data)
+               data,
+               *step_sizes)
     , checkpointing(this->settings,
                     discretization,
                     scheme,
@@ -55,6 +72,12 @@ namespace PhaseField
                     *step_sizes,
                     remeshing)
   {
+    if (settings.model.step_control.stationary_tolerance > 0 &&
+        !scheme.has_energy_law())
+      throw InputError("<Time stepping / Stationary tolerance> needs a scheme "
+                       "with an energy law (nested, augmented lagrangian); "
+                       "the " +
+                       scheme.name() + " scheme has none.");
     data.final_step = n_steps;
   }
 
@@ -89,9 +112,19 @@ namespace PhaseField
         settings.output_directory + "> is after step " +
         std::to_string(last_step) + ", and this run ends with step " +
         std::to_string(data.final_step) +
-        " (<Time stepping / Number of steps> plus <Ramp-up steps>): there is "
-        "no step to take. Raise <Time stepping / Number of steps> to continue "
-        "the run.");
+        " (<Time stepping / Number of steps> plus <Ramp-up steps>, or the "
+        "step at which <Stationary tolerance> ended it): there is no step "
+        "to take. Raise <Time stepping / Number of steps> to continue the "
+        "run.");
+    if (reached_end_time())
+      throw InputError("<Checkpoint / Resume> = true, but the last checkpoint "
+                       "in <" +
+                       settings.output_directory +
+                       "> is at t = " + std::to_string(data.time) +
+                       ", at or after <Time stepping / End time> = " +
+                       std::to_string(settings.model.step_control.end_time) +
+                       ": there is no step to take. Raise <End time> to "
+                       "continue the run.");
     recorder.append_statistics(last_step);
     pcout << "resuming after step " << last_step << " at t = " << data.time
           << std::endl;
@@ -134,7 +167,7 @@ namespace PhaseField
         data.old_state    = state;
         data.old_energies = data.energies_of(scheme, state);
         const double tried_tau =
-          step_sizes->first_step_size(step - data.step_offset);
+          within_end_time(step_sizes->first_step_size(step - data.step_offset));
         typename StepAttempt<dim>::Attempt attempt{tried_tau, false};
         if (step == first_step && first_start_value != nullptr)
           state = *first_start_value;
@@ -142,12 +175,13 @@ namespace PhaseField
           attempt = step_attempt.predict_start_value(step, state, tried_tau);
         const typename StepAttempt<dim>::Result result =
           remeshing.advance_on_resolving_mesh(step, state, attempt);
-        accept_step(step, state, result, tried_tau);
+        const bool ends = accept_step(step, state, result, tried_tau);
         // asked after every step, the last one too: the client may keep
         // a history that a checkpoint of this step holds
         const bool client_finished =
           client.finished(step, state, result.energies);
-        const bool finished = step == data.final_step || client_finished;
+        const bool finished =
+          step == data.final_step || client_finished || ends;
         const bool checkpoint_written = end_step(step, state, finished);
         if (finished)
           break;
@@ -158,7 +192,7 @@ namespace PhaseField
 
 
   template <int dim>
-  void
+  bool
   TimeLoop<dim>::accept_step(const unsigned int                       step,
                              const BlockVector                       &state,
                              const typename StepAttempt<dim>::Result &result,
@@ -171,7 +205,7 @@ namespace PhaseField
                             state,
                             tau,
                             scheme.start_extrapolation());
-    step_sizes->accept(tau, tried_tau);
+    step_sizes->accept(tau, tried_tau, data.old_state, state);
     client.step_accepted(step,
                          data.old_state,
                          data.old_energies,
@@ -185,7 +219,11 @@ namespace PhaseField
     // tau = tried_tau / 2^halvings exactly
     const auto halvings =
       static_cast<unsigned int>(std::lround(std::log2(tried_tau / tau)));
-    recorder.record(step, state, result.energies, result.report, tau, halvings);
+    const bool ends =
+      reached_end_time() || stationary(step, state, result.energies, tau);
+    recorder.record(
+      step, state, result.energies, result.report, tau, halvings, true, ends);
+    return ends;
   }
 
 
@@ -206,6 +244,54 @@ namespace PhaseField
     if (checkpoint)
       checkpointing.write_checkpoint(step, state, finished);
     return checkpoint;
+  }
+
+
+
+  template <int dim>
+  double
+  TimeLoop<dim>::within_end_time(const double tau) const
+  {
+    const double end_time = settings.model.step_control.end_time;
+    if (end_time > 0 && data.time + tau >= end_time * (1 - time_roundoff))
+      return end_time - data.time;
+    return tau;
+  }
+
+
+
+  template <int dim>
+  bool
+  TimeLoop<dim>::reached_end_time() const
+  {
+    const double end_time = settings.model.step_control.end_time;
+    return end_time > 0 && data.time >= end_time * (1 - time_roundoff);
+  }
+
+
+
+  template <int dim>
+  bool
+  TimeLoop<dim>::stationary(const unsigned int step,
+                            const BlockVector &state,
+                            const Energies    &energies,
+                            const double       tau) const
+  {
+    const double tolerance = settings.model.step_control.stationary_tolerance;
+    if (!(tolerance > 0))
+      return false;
+    const double before =
+      client.stationarity_energy(scheme, data.old_state, data.old_energies);
+    const double after = client.stationarity_energy(scheme, state, energies);
+    const double rate  = std::abs(after - before) / (tau * std::abs(after));
+    if (!(rate < tolerance))
+      return false;
+    pcout << "stationary after step " << step << " at t = " << data.time
+          << ": the energy changes by " << rate
+          << " of itself per unit time, below <Time stepping / Stationary "
+             "tolerance> = "
+          << tolerance << "; the run ends here" << std::endl;
+    return true;
   }
 
 

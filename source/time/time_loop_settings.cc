@@ -1,9 +1,22 @@
+#include <limits>
 #include <phasefield/time/checkpoint.h>
 #include <phasefield/time/time_loop_settings.h>
 #include <string>
 
 namespace PhaseField
 {
+  unsigned int
+  TimeLoopSettings::n_steps() const
+  {
+    // half the range: a step offset (TimeLoop::continue_run()) adds to it
+    constexpr unsigned int unbounded =
+      std::numeric_limits<unsigned int>::max() / 2;
+    return model.step_control.end_time > 0 ? unbounded :
+                                             model.n_ramp_steps + model.n_steps;
+  }
+
+
+
   TimeLoopSettings
   TimeLoopSettings::from(const WillmoreParameters &parameters,
                          const std::string        &program_name)

@@ -168,6 +168,64 @@ namespace PhaseField
     std::any parameters;
   };
 
+  /** `Time stepping / Step control`. */
+  enum class StepControl
+  {
+    /** The sizes of the schedule: ramp-up, then `Tau` (the thesis). */
+    fixed,
+    /**
+     * The largest size whose local error estimate is below `Tolerance`
+     * (AdaptiveStepSizes); `Tau` is the first step.
+     */
+    adaptive
+  };
+
+  /**
+   * The step control and the end of a run, in subsection `Time stepping`:
+   * `Step control`, `Tolerance`, `Smallest step`, `Largest step` and
+   * `End time` where the run counts its steps (not for the levels of
+   * shape from contour, which control their own steps), `Stationary
+   * tolerance` always.
+   */
+  struct StepControlParameters
+  {
+    StepControl control = StepControl::fixed;
+    /**
+     * The local error per step that the adaptive control allows: the
+     * L2 norm over the domain of the estimated error of U after one step
+     * (LocalErrorEstimate).
+     */
+    double      tolerance = 0;
+    std::string smallest_step_expression;
+    std::string largest_step_expression;
+    std::string end_time_expression;
+    /**
+     * Stop when the relative change of the energy per unit time,
+     * |E^{k+1} - E^k| / (tau |E^{k+1}|), falls below this (0: never).
+     */
+    double stationary_tolerance = 0;
+
+    /** Values after evaluate(); 0: no limit, no end time. */
+    double smallest_step = 0;
+    double largest_step  = 0;
+    double end_time      = 0;
+
+    /** Declare into subsection `Time stepping` (entered by the caller). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const bool                with_step_counts);
+    /** Parse from subsection `Time stepping` (entered by the caller). */
+    void
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const bool                with_step_counts);
+    /**
+     * Evaluate the expressions at mesh size @p h and check them with the
+     * first step size @p tau.
+     */
+    void
+    evaluate(const double h, const double tau);
+  };
+
   /**
    * Subsections `Phase field` and `Time stepping`. The raw expressions are
    * kept so that they can be evaluated once h is known (see evaluate()).
@@ -209,6 +267,8 @@ namespace PhaseField
      * no limit.
      */
     double max_inside_change_factor;
+    /** Step control, end time and stationarity. */
+    StepControlParameters step_control;
 
     /** Size of time step @p step (1-based), see n_ramp_steps. */
     double

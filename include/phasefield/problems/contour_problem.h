@@ -132,6 +132,19 @@ namespace PhaseField
       return false;
     }
 
+    /**
+     * The merit function (merit()): `Time stepping / Stationary tolerance`
+     * ends a level when it no longer changes.
+     */
+    double
+    stationarity_energy(const TimeSteppingScheme<dim> &scheme,
+                        const BlockVector             &state,
+                        const Energies                &energies) const override
+    {
+      (void)scheme;
+      return merit(state, energies);
+    }
+
     /** The automatic level transition. */
     bool
     finished(const unsigned int step,

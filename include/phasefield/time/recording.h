@@ -10,6 +10,7 @@
 #include <phasefield/schemes/energies.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/time/loop_data.h>
+#include <phasefield/time/step_size_policy.h>
 #include <phasefield/time/time_loop_client.h>
 #include <phasefield/time/time_loop_settings.h>
 #include <string>
@@ -20,7 +21,9 @@ namespace PhaseField
   /**
    * What the time loop records of each step: a row of statistics.csv
    * (statistics_columns()), a progress line, and VTU output every
-   * `Output / VTU interval` steps and at the last step.
+   * `Output / VTU interval` steps and at the last step. The step-size
+   * policy's columns (StepSizePolicy::statistics_columns()) follow
+   * `step_halvings`, and the progress line shows them with tau.
    */
   template <int dim>
   class StepRecorder
@@ -32,7 +35,8 @@ namespace PhaseField
                  TimeLoopClient<dim>              &client,
                  const dealii::ConditionalOStream &pcout,
                  dealii::TimerOutput              &timer,
-                 LoopData                         &data);
+                 LoopData                         &data,
+                 const StepSizePolicy             &step_sizes);
 
     /** Start a new statistics.csv in the output directory. */
     void
@@ -49,7 +53,8 @@ namespace PhaseField
      * Statistics row, progress line and (if due and @p with_output) VTU
      * output of step @p step with the @p energies of @p state, taken at
      * size @p tau after @p halvings halvings (column `step_halvings`); the
-     * energies are kept as LoopData::state_energies.
+     * energies are kept as LoopData::state_energies. @p last: the run ends
+     * with this step (the VTU output is due).
      */
     void
     record(const unsigned int step,
@@ -58,7 +63,8 @@ namespace PhaseField
            const StepReport  &report,
            const double       tau,
            const unsigned int halvings    = 0,
-           const bool         with_output = true);
+           const bool         with_output = true,
+           const bool         last        = false);
 
   private:
     /**
@@ -70,7 +76,8 @@ namespace PhaseField
 
     /**
      * The progress line of step @p step with the @p energies, the L2
-     * @p error, the client's @p extras and the number of @p cells.
+     * @p error, the client's @p extras, the number of @p cells and, where
+     * the step-size policy has columns, the step size @p tau and those.
      */
     void
     print_progress(const unsigned int         step,
@@ -78,7 +85,8 @@ namespace PhaseField
                    const StepReport          &report,
                    const double               error,
                    const std::vector<double> &extras,
-                   const double               cells) const;
+                   const double               cells,
+                   const double               tau) const;
 
     /** VTU output of the fields and the curvature. */
     void
@@ -91,6 +99,7 @@ namespace PhaseField
     const dealii::ConditionalOStream &pcout;
     dealii::TimerOutput              &timer;
     LoopData                         &data;
+    const StepSizePolicy             &step_sizes;
     dealii::Timer                     wall_timer;
     std::unique_ptr<StatisticsFile>   statistics;
   };

@@ -38,7 +38,7 @@ namespace PhaseField
               const dealii::ConditionalOStream &pcout,
               dealii::TimerOutput              &timer,
               LoopData                         &data,
-              const StepSizePolicy             &step_sizes,
+              StepSizePolicy                   &step_sizes,
               StepAttempt<dim>                 &step_attempt);
 
     /** Adapt the mesh to the state and restore what the transfer broke. */
@@ -106,13 +106,17 @@ namespace PhaseField
     restore_after_transfer(BlockVector &fields, const double tau);
 
     /**
-     * @p fields and the vectors of the predictor's history: what a change
-     * of the mesh transfers.
+     * @p fields and the vectors of the predictor's and the step-size
+     * policy's histories: what a change of the mesh transfers.
      */
     std::vector<BlockVector *>
     with_history(std::vector<BlockVector *> fields);
 
-    /** Distribute the constraints in the transferred history. */
+    /** The vectors of the predictor's and the policy's histories. */
+    std::vector<BlockVector *>
+    histories();
+
+    /** Distribute the constraints in the transferred histories. */
     void
     distribute_history_constraints();
 
@@ -131,7 +135,7 @@ namespace PhaseField
     const dealii::ConditionalOStream &pcout;
     dealii::TimerOutput              &timer;
     LoopData                         &data;
-    const StepSizePolicy             &step_sizes;
+    StepSizePolicy                   &step_sizes;
     StepAttempt<dim>                 &step_attempt;
     /** TimeSteppingScheme::before_remesh() on a change of the mesh. */
     boost::signals2::scoped_connection scheme_before_remesh;

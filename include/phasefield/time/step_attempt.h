@@ -7,6 +7,7 @@
 #include <phasefield/schemes/energies.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
 #include <phasefield/time/loop_data.h>
+#include <phasefield/time/step_size_policy.h>
 #include <phasefield/time/time_loop_client.h>
 #include <phasefield/time/time_loop_settings.h>
 #include <string>
@@ -47,7 +48,8 @@ namespace PhaseField
                 TimeLoopClient<dim>              &client,
                 const dealii::ConditionalOStream &pcout,
                 dealii::TimerOutput              &timer,
-                LoopData                         &data);
+                LoopData                         &data,
+                const StepSizePolicy             &step_sizes);
 
     /**
      * Replace the start value @p state of step @p step, of size @p tau (the
@@ -99,6 +101,8 @@ namespace PhaseField
      * whose inside measure is more than Settings::max_inside_change_factor
      * times larger or smaller than old_state's has jumped to another branch
      * (the augmented Lagrangian's level-6 cube vanished in one step).
+     * Last, the step-size policy's rejection() (an adaptive control's
+     * error estimate).
      */
     std::string
     rejection(const BlockVector &state,
@@ -111,6 +115,7 @@ namespace PhaseField
     const dealii::ConditionalOStream &pcout;
     dealii::TimerOutput              &timer;
     LoopData                         &data;
+    const StepSizePolicy             &step_sizes;
   };
 } // namespace PhaseField
 

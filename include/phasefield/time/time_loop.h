@@ -26,10 +26,12 @@ namespace PhaseField
   /**
    * The time loop of every time-dependent program: steps of the sizes of
    * a StepSizePolicy (ScheduledStepSizes: ModelParameters::step_size(),
-   * ramp-up, then Tau), each retried with half the step if the scheme's
-   * solver fails or its result breaks the energy law (thesis Cor. 3.3,
-   * for schemes that have one) or changes the inside measure by more than
-   * `Time stepping / Largest inside change factor` (StepAttempt),
+   * ramp-up, then Tau; AdaptiveStepSizes: `Time stepping / Step control =
+   * adaptive`), up to `Number of steps` or `End time`, or until the energy
+   * is stationary (`Stationary tolerance`), each retried with half the step if
+   * the scheme's solver fails or its result breaks the energy law (thesis
+   * Cor. 3.3, for schemes that have one) or changes the inside measure by more
+   * than `Time stepping / Largest inside change factor` (StepAttempt),
    * narrow-band re-meshing every `Mesh / Refinement interval` steps
    * (Remeshing), a row of statistics.csv and a progress line per step and
    * VTU output every `Output / VTU interval` steps (StepRecorder), a
@@ -120,9 +122,10 @@ namespace PhaseField
     /**
      * Take the accepted @p result of step @p step into @p state, tried
      * first with @p tried_tau: the predictor's history, the step sizes,
-     * the client, the time and the record of the step.
+     * the client, the time and the record of the step. Returns whether the
+     * run ends with it (end time reached, or stationary()).
      */
-    void
+    bool
     accept_step(const unsigned int                       step,
                 const BlockVector                       &state,
                 const typename StepAttempt<dim>::Result &result,
@@ -136,13 +139,35 @@ namespace PhaseField
     bool
     end_step(const unsigned int step, BlockVector &state, const bool finished);
 
+    /**
+     * @p tau, shortened to end at `End time` where it would pass it (or
+     * end within round-off of it).
+     */
+    double
+    within_end_time(const double tau) const;
+
+    /** Has the run reached `End time` (if it has one)? */
+    bool
+    reached_end_time() const;
+
+    /**
+     * Is the relative change of the client's stationarity energy from
+     * old_state to @p state (with @p energies), a step of size @p tau,
+     * per unit time below `Stationary tolerance`? Says so if it is.
+     */
+    bool
+    stationary(const unsigned int step,
+               const BlockVector &state,
+               const Energies    &energies,
+               const double       tau) const;
+
     const Settings                    settings;
     Discretization<dim>              &discretization;
     TimeSteppingScheme<dim>          &scheme;
     Client                           &client;
     const dealii::ConditionalOStream &pcout;
 
-    /** Number of steps of this run (ramp-up and Tau). */
+    /** Number of steps of this run (TimeLoopSettings::n_steps()). */
     const unsigned int n_steps;
     /** The last step taken. */
     unsigned int last_step = 0;

@@ -147,6 +147,20 @@ namespace PhaseField
     }
 
     /**
+     * The energy whose relative change per unit time `Time stepping /
+     * Stationary tolerance` compares, of @p state with @p energies; the
+     * default is that of the scheme's energy law.
+     */
+    virtual double
+    stationarity_energy(const TimeSteppingScheme<dim> &scheme,
+                        const BlockVector             &state,
+                        const Energies                &energies) const
+    {
+      (void)state;
+      return scheme.energy_law_energy(energies);
+    }
+
+    /**
      * After the fields were transferred to a new mesh, before the
      * constraints are distributed and the scheme restores its fields
      * (edge restoration: the fixed values on the new mesh).

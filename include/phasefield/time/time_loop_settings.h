@@ -56,6 +56,13 @@ namespace PhaseField
     double largest_step_factor = 1;
 
     /**
+     * The number of steps of a run: ramp-up steps and Number of steps, or
+     * without bound where the run ends at `End time`.
+     */
+    unsigned int
+    n_steps() const;
+
+    /**
      * The settings of the Willmore-flow parameters of the program
      * @p program_name.
      */
