@@ -1,6 +1,10 @@
 #!/usr/bin/python3
 """Plot the energies (and the L2 error, where known) of a statistics.csv.
 
+With `Time stepping / Step control = adaptive` (a column error_estimate) a
+panel of the step size tau over time, with the error estimate of each step
+and the steps that were halved marked.
+
 For shape_from_contour (a statistics.csv with mismatch_energy) the energy
 components over the steps, with the level transitions, as thesis Fig. 6.6.
 
@@ -38,9 +42,11 @@ def main():
     t = [float(r["time"]) for r in rows]
     errors = [float(r["l2_error"]) for r in rows]
     has_error = any(not math.isnan(e) for e in errors)
+    adaptive = "error_estimate" in rows[0]
+    panels = 1 + has_error + adaptive
 
-    fig, axes = plt.subplots(1, 2 if has_error else 1, figsize=(
-        11 if has_error else 6, 4), squeeze=False)
+    fig, axes = plt.subplots(1, panels, figsize=(5.5 * panels, 4),
+                             squeeze=False)
     ax = axes[0][0]
     ax.plot(t, [float(r["willmore_energy"]) for r in rows], label="Willmore energy")
     ax.set_xlabel("time")
@@ -57,9 +63,31 @@ def main():
         ax.set_xlabel("time")
         ax.set_ylabel("L2 error")
         ax.set_title("L2 error against the exact evolution")
+    if adaptive:
+        plot_step_sizes(rows[1:], axes[0][panels - 1])
     fig.tight_layout()
     fig.savefig(out, dpi=100)
     print(f"wrote {out}")
+
+
+def plot_step_sizes(rows, ax):
+    """tau and the error estimate per step of an adaptive run."""
+    t = [float(r["time"]) for r in rows]
+    tau = [float(r["tau"]) for r in rows]
+    ax.semilogy(t, tau, "o-", markersize=3, label="tau")
+    halved = [(ti, taui) for ti, taui, r in zip(t, tau, rows)
+              if float(r["step_halvings"]) > 0]
+    if halved:
+        ax.semilogy(*zip(*halved), "rx", label="halved (rejected) step")
+    ax.set_xlabel("time")
+    ax.set_ylabel("step size tau")
+    ax.set_title("adaptive step sizes")
+    ax.legend(loc="lower right")
+    estimates = [float(r["error_estimate"]) for r in rows]
+    if any(not math.isnan(e) for e in estimates):
+        ax2 = ax.twinx()
+        ax2.semilogy(t, estimates, "C2.", label="error estimate")
+        ax2.set_ylabel("local error estimate", color="C2")
 
 
 def plot_contour(rows, out):

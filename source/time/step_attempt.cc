@@ -137,6 +137,8 @@ namespace PhaseField
             const Energies energies = scheme.energies(state);
             failure                 = rejection(state, energies, tau);
             if (failure.empty())
+              failure = error_rejection(step, state, tau, halvings);
+            if (failure.empty())
               return {report, tau, energies};
           }
         if (from_extrapolation)
@@ -224,9 +226,28 @@ namespace PhaseField
           << ", by more than the factor <Time stepping / Largest inside "
              "change factor> = "
           << factor << " (the solver jumped to another branch)";
-    if (!why.str().empty())
-      return why.str();
-    return step_sizes.rejection(data.old_state, state, tau);
+    return why.str();
+  }
+
+
+
+  template <int dim>
+  std::string
+  StepAttempt<dim>::error_rejection(const unsigned int step,
+                                    const BlockVector &state,
+                                    const double       tau,
+                                    const unsigned int halvings) const
+  {
+    const std::string why = step_sizes.rejection(data.old_state, state, tau);
+    if (why.empty() || halvings < settings.max_step_halvings)
+      return why;
+    pcout << "  Warning: step " << step << ": " << why << " after " << halvings
+          << " halvings; the step is taken (where the estimate does not "
+             "fall with the step size, the state changes faster than the "
+             "time step resolves: a topology change, or data far from the "
+             "discrete profile)"
+          << std::endl;
+    return "";
   }
 
 

@@ -249,7 +249,9 @@ namespace PhaseField
     const std::optional<double> error = estimate(before, after, tau);
     next_tau   = limits.next(tau, tried_tau, growth_factor(error));
     last_error = error;
-    error_estimate.record(before.block(0), after.block(0), tau);
+    if (!first_step)
+      error_estimate.record(before.block(0), after.block(0), tau);
+    first_step = false;
   }
 
 
@@ -296,6 +298,7 @@ namespace PhaseField
       next_tau = saved.step_size_limit;
     error_estimate.forget();
     last_error.reset();
+    first_step = false;
   }
 
 

@@ -58,8 +58,8 @@ namespace PhaseField
                      const bool         finished);
 
     /**
-     * At the end of step @p step (not the last one): if SIGTERM, SIGINT or SIGHUP
-     * reached any rank (stop_requested()), write the checkpoint of
+     * At the end of step @p step (not the last one): if SIGTERM, SIGINT or
+     * SIGHUP reached any rank (stop_requested()), write the checkpoint of
      * @p state if checkpoints are on and @p checkpoint_written is false,
      * and throw a StopRequest on every rank that says so.
      */

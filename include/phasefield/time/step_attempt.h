@@ -101,13 +101,24 @@ namespace PhaseField
      * whose inside measure is more than Settings::max_inside_change_factor
      * times larger or smaller than old_state's has jumped to another branch
      * (the augmented Lagrangian's level-6 cube vanished in one step).
-     * Last, the step-size policy's rejection() (an adaptive control's
-     * error estimate).
      */
     std::string
     rejection(const BlockVector &state,
               const Energies    &energies,
               const double       tau) const;
+
+    /**
+     * The step-size policy's rejection() of the result @p state of step
+     * @p step of size @p tau from old_state (an adaptive control's error
+     * estimate), after @p halvings halvings: after the last halving the
+     * step is taken with a warning instead, as the estimate does not fall
+     * with the step size then.
+     */
+    std::string
+    error_rejection(const unsigned int step,
+                    const BlockVector &state,
+                    const double       tau,
+                    const unsigned int halvings) const;
 
     const TimeLoopSettings           &settings;
     TimeSteppingScheme<dim>          &scheme;
