@@ -2,7 +2,7 @@
 # Usage: run_parameter_files.sh <source directory> <build directory>
 # Runs every shipped parameter file parameter_files/<program>/*.prm through
 # build/<program> with --set options that make it small (level 5, two
-# steps, epsilon = 4h; biharmonic_flow: levels 3 and 4; shape_from_contour:
+# steps without an end time, epsilon = 4h; biharmonic_flow: levels 3 and 4; shape_from_contour:
 # level 5, one step; scripts/plot_shape.py on the silhouette file's
 # output), then the demo (willmore_flow
 # without arguments, shortened by --set) and scripts/plot_statistics.py on
@@ -48,6 +48,7 @@ for prm in parameter_files/*/*.prm; do
     *)
       run "$build_dir/$program" "$prm" --set "Mesh/Finest level=5" \
         --set "Time stepping/Number of steps=2" \
+        --set "Time stepping/End time=0" \
         --set "Time stepping/Ramp-up steps=0" \
         --set "Phase field/Epsilon=4*h" \
         --set "Output directory=$output/run" ;;

@@ -132,20 +132,27 @@ namespace PhaseField
         attempt.from_extrapolation    = false;
         std::string failure =
           "the solver of the " + scheme.name() + " scheme did not converge";
+        bool error_too_large = false;
         if (report.converged)
           {
             const Energies energies = scheme.energies(state);
             failure                 = rejection(state, energies, tau);
             if (failure.empty())
-              failure = error_rejection(step, state, tau, halvings);
+              {
+                failure         = error_rejection(step, state, tau, halvings);
+                error_too_large = !failure.empty();
+              }
             if (failure.empty())
               return {report, tau, energies};
           }
+        // the extrapolation is for this tau: halvings start from the last
+        // result (old_state)
         if (from_extrapolation)
+          saved.reset();
+        // the same step from the last result, unless only its error was too
+        // large (which does not depend on the start of its iteration)
+        if (from_extrapolation && !error_too_large)
           {
-            // the extrapolation is for this tau: the same step from the
-            // last result (old_state), then halvings from there
-            saved.reset();
             state = data.old_state;
             pcout << "  step " << step << ": " << failure
                   << " from the extrapolated start, retrying from the last "
