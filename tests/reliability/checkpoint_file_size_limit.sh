@@ -13,34 +13,40 @@
 ranks="$1"; mpiexec="$2"; program="$3"; work="$4"
 . "$(dirname "$0")/common.sh"
 rm -rf "$work"; mkdir -p "$work"
-options() {
-  echo --set "Geometry/Shape=quarter circle" --set "Mesh/Finest level=5" \
-    --set "Mesh/Coarsest level=3" --set "Output/VTU interval=0" \
-    --set "Checkpoint/Interval=2" --set "Output directory=$work/run"
+# willmore <runner> <args...>: the run of this test by <runner>
+willmore() {
+  runner="$1"; shift
+  "$runner" "$program" --set "Geometry/Shape=quarter circle" \
+    --set "Mesh/Finest level=5" --set "Mesh/Coarsest level=3" \
+    --set "Output/VTU interval=0" --set "Checkpoint/Interval=2" \
+    --set "Output directory=$work/run" "$@"
 }
-run "$ranks" "$program" $(options) --set "Time stepping/Number of steps=2"
+normal() { run "$ranks" "$@"; }
+# under the file size limit $limit (KiB, bash's unit) with SIGXFSZ
+# ignored; MPI keeps its own files (shared memory of the byte transfer
+# layer, PMIx's data store) below the limit with these settings
+limited() {
+  if [ "$ranks" -eq 1 ]; then
+    set -- env OMPI_MCA_btl=self "$@"
+  else
+    set -- env OMPI_MCA_btl=tcp,self "$mpiexec" --allow-run-as-root \
+      --oversubscribe -n "$ranks" "$@"
+  fi
+  output=$(PMIX_MCA_gds=hash OMP_NUM_THREADS=1 timeout 60 bash -c \
+    'limit="$1"; shift; trap "" XFSZ; ulimit -f "$limit"; exec "$@"' \
+    sh "$limit" "$@" 2>&1)
+  status=$?
+}
+willmore normal --set "Time stepping/Number of steps=2"
 expect "the run that writes checkpoint-2" 0 "checkpoint written after step 2"
 metadata="$work/run/checkpoint-2/checkpoint.txt"
 cp "$metadata" "$work/checkpoint-2.txt"
-# in KiB (bash's unit), 1 KiB below the size of mesh_fixed.data
+# 1 KiB below the size of mesh_fixed.data
 size=$(wc -c < "$work/run/checkpoint-2/mesh_fixed.data")
 limit=$((size / 1024 - 1))
 echo "mesh_fixed.data: $size bytes; file size limit $limit KiB"
-# MPI keeps its own files (shared memory of the byte transfer layer,
-# PMIx's data store) below the limit with these settings
-if [ "$ranks" -eq 1 ]; then
-  output=$(OMPI_MCA_btl=self PMIX_MCA_gds=hash OMP_NUM_THREADS=1 \
-    timeout 60 bash -c 'limit="$1"; shift; trap "" XFSZ; ulimit -f "$limit";
-    exec "$@"' sh "$limit" "$program" $(options) \
-    --set "Checkpoint/Resume=true" --set "Time stepping/Number of steps=4" 2>&1)
-else
-  output=$(OMPI_MCA_btl=tcp,self PMIX_MCA_gds=hash OMP_NUM_THREADS=1 \
-    timeout 60 bash -c 'limit="$1"; shift; trap "" XFSZ; ulimit -f "$limit";
-    exec "$@"' sh "$limit" "$mpiexec" --allow-run-as-root --oversubscribe \
-    -n "$ranks" "$program" $(options) \
-    --set "Checkpoint/Resume=true" --set "Time stepping/Number of steps=4" 2>&1)
-fi
-status=$?
+willmore limited --set "Checkpoint/Resume=true" \
+  --set "Time stepping/Number of steps=4"
 expect "checkpoint-4 under a file size limit of $limit KiB" 1 \
   "Cannot write the checkpoint file <$work/run/checkpoint-4.tmp/mesh(_fixed.data)?>: it needs [0-9]+ bytes, more than the file size limit of this process \($((limit * 1024)) bytes"
 left=$(cd "$work/run" && ls -d checkpoint-* | tr '\n' ' ')
@@ -50,7 +56,7 @@ fi
 if ! cmp -s "$metadata" "$work/checkpoint-2.txt"; then
   echo "FAIL: checkpoint-2/checkpoint.txt changed"; failed=1
 fi
-run "$ranks" "$program" $(options) --set "Checkpoint/Resume=true" \
+willmore normal --set "Checkpoint/Resume=true" \
   --set "Time stepping/Number of steps=4"
 expect "resume from checkpoint-2 without the limit" 0 \
   "checkpoint written after step 4"

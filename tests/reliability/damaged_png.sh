@@ -9,7 +9,7 @@
 # the target of shape_from_contour (<Target / Image file>), must end the
 # run with exit status 2 and a message naming the file and the parameter,
 # without a crash, a hang or libpng's own error line
-# (doc/edge_restoration.md, "Images").
+# (doc/edge_restoration.md, "Geometry / Image file").
 ranks="$1"; mpiexec="$2"; build="$3"; work="$4"
 . "$(dirname "$0")/common.sh"
 rm -rf "$work"; mkdir -p "$work"
