@@ -8,6 +8,7 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <filesystem>
 #include <iomanip>
+#include <phasefield/core/program.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/problems/biharmonic_problem.h>
 #include <phasefield/schemes/scheme_registry.h>
@@ -494,7 +495,7 @@ namespace PhaseField
     for (const unsigned int level : parameters.convergence.levels)
       {
         const BiharmonicLevelResult r =
-          BiharmonicProblem<dim>(parameters, level).run();
+          run_problem<BiharmonicProblem<dim>>(parameters, level);
         results.push_back(r);
         csv.add_row({double(r.level),
                      r.h,

@@ -26,8 +26,8 @@ main(int argc, char **argv)
       ContourParameters parameters;
       parameters.parse_parameters(prm);
       if (parameters.willmore.dimension == 2)
-        ContourProblem<2>(parameters).run();
+        run_problem<ContourProblem<2>>(parameters);
       else
-        ContourProblem<3>(parameters).run();
+        run_problem<ContourProblem<3>>(parameters);
     });
 }

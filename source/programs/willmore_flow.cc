@@ -24,8 +24,8 @@ main(int argc, char **argv)
       WillmoreFlowParameters parameters;
       parameters.parse_parameters(prm);
       if (parameters.dimension == 2)
-        WillmoreProblem<2>(parameters).run();
+        run_problem<WillmoreProblem<2>>(parameters);
       else
-        WillmoreProblem<3>(parameters).run();
+        run_problem<WillmoreProblem<3>>(parameters);
     });
 }
