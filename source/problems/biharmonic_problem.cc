@@ -8,7 +8,6 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <filesystem>
 #include <iomanip>
-#include <phasefield/core/program.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/problems/biharmonic_problem.h>
 #include <phasefield/schemes/scheme_registry.h>
@@ -495,7 +494,7 @@ namespace PhaseField
     for (const unsigned int level : parameters.convergence.levels)
       {
         const BiharmonicLevelResult r =
-          run_problem<BiharmonicProblem<dim>>(parameters, level);
+          BiharmonicProblem<dim>(parameters, level).run();
         results.push_back(r);
         csv.add_row({double(r.level),
                      r.h,

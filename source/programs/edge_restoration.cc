@@ -24,6 +24,6 @@ main(int argc, char **argv)
     [](dealii::ParameterHandler &prm) {
       EdgeRestorationParameters parameters;
       parameters.parse_parameters(prm);
-      run_problem<RestorationProblem>(parameters);
+      RestorationProblem(parameters).run();
     });
 }

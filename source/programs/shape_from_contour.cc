@@ -26,8 +26,8 @@ main(int argc, char **argv)
       ContourParameters parameters;
       parameters.parse_parameters(prm);
       if (parameters.willmore.dimension == 2)
-        run_problem<ContourProblem<2>>(parameters);
+        ContourProblem<2>(parameters).run();
       else
-        run_problem<ContourProblem<3>>(parameters);
+        ContourProblem<3>(parameters).run();
     });
 }

@@ -24,8 +24,8 @@ main(int argc, char **argv)
       WillmoreFlowParameters parameters;
       parameters.parse_parameters(prm);
       if (parameters.dimension == 2)
-        run_problem<WillmoreProblem<2>>(parameters);
+        WillmoreProblem<2>(parameters).run();
       else
-        run_problem<WillmoreProblem<3>>(parameters);
+        WillmoreProblem<3>(parameters).run();
     });
 }

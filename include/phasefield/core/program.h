@@ -2,12 +2,8 @@
 #define phasefield_program_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <exception>
 #include <functional>
-#include <optional>
 #include <string>
-#include <type_traits>
-#include <utility>
 
 namespace PhaseField
 {
@@ -31,45 +27,6 @@ namespace PhaseField
               const std::string &program_name,
               const std::function<void(dealii::ParameterHandler &)> &declare,
               const std::function<void(dealii::ParameterHandler &)> &run);
-
-  /**
-   * Construct a @p Problem from @p arguments and return what its run()
-   * returns. An
-   * exception of run() is rethrown only after the problem is destroyed:
-   * no destructor of the problem then runs while an exception is in
-   * flight, which deal.II's TimerOutput answers with a paragraph about
-   * "an uncaught exception" before the program's own message (its
-   * output is `never` and its sections are closed, so the destruction
-   * needs no communication).
-   */
-  template <typename Problem, typename... Arguments>
-  auto
-  run_problem(Arguments &&...arguments)
-  {
-    using Result = decltype(std::declval<Problem &>().run());
-    std::exception_ptr failure;
-    std::conditional_t<std::is_void_v<Result>, bool, std::optional<Result>>
-      result{};
-    {
-      std::optional<Problem> problem;
-      problem.emplace(std::forward<Arguments>(arguments)...);
-      try
-        {
-          if constexpr (std::is_void_v<Result>)
-            problem->run();
-          else
-            result.emplace(problem->run());
-        }
-      catch (...)
-        {
-          failure = std::current_exception();
-        }
-    }
-    if (failure)
-      std::rethrow_exception(failure);
-    if constexpr (!std::is_void_v<Result>)
-      return std::move(*result);
-  }
 } // namespace PhaseField
 
 #endif
