@@ -249,33 +249,89 @@ namespace PhaseField
 
 
 
+  namespace
+  {
+    /** 64-bit FNV-1a, fed piece by piece. */
+    struct Fnv1a
+    {
+      std::uint64_t hash = 14695981039346656037ull;
+
+      void
+      add(const char *data, const std::size_t n)
+      {
+        constexpr std::uint64_t prime = 1099511628211ull;
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            hash ^= static_cast<unsigned char>(data[i]);
+            hash *= prime;
+          }
+      }
+
+      std::string
+      text() const
+      {
+        std::ostringstream out;
+        out << std::hex;
+        out.width(16);
+        out.fill('0');
+        out << hash;
+        return out.str();
+      }
+    };
+  } // namespace
+
+
+
   std::string
   file_checksum(const std::string &filename)
   {
     std::ifstream in(filename, std::ios::binary);
     if (!in)
       throw std::runtime_error("Cannot read the file <" + filename + ">.");
-    constexpr std::uint64_t offset_basis = 14695981039346656037ull;
-    constexpr std::uint64_t prime        = 1099511628211ull;
-    std::uint64_t           hash         = offset_basis;
-    std::vector<char>       buffer(1 << 20);
+    Fnv1a             hash;
+    std::vector<char> buffer(1 << 20);
     while (in)
       {
         in.read(buffer.data(), buffer.size());
-        for (std::streamsize i = 0; i < in.gcount(); ++i)
-          {
-            hash ^= static_cast<unsigned char>(buffer[i]);
-            hash *= prime;
-          }
+        hash.add(buffer.data(), in.gcount());
       }
     if (in.bad())
       throw std::runtime_error("Cannot read the file <" + filename + ">.");
-    std::ostringstream text;
-    text << std::hex;
-    text.width(16);
-    text.fill('0');
-    text << hash;
-    return text.str();
+    return hash.text();
+  }
+
+
+
+  std::string
+  data_checksum(const std::string &data)
+  {
+    Fnv1a hash;
+    hash.add(data.data(), data.size());
+    return hash.text();
+  }
+
+
+
+  void
+  write_verified(const std::string &filename, const std::string &text)
+  {
+    write_checked(filename, [&](std::ostream &out) { out << text; });
+    std::error_code      error;
+    const std::uintmax_t size = std::filesystem::file_size(filename, error);
+    std::string          problem;
+    if (error)
+      problem = "is missing";
+    else if (size != text.size())
+      problem = "has " + std::to_string(size) + " bytes instead of " +
+                std::to_string(text.size());
+    else if (file_checksum(filename) != data_checksum(text))
+      problem = "does not hold what was written";
+    if (problem.empty())
+      return;
+    std::filesystem::remove(filename, error);
+    throw WriteError("The file <" + filename + "> " + problem +
+                     " when it is read back after writing. " +
+                     write_failure_message(filename, 0));
   }
 
 

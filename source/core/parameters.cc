@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <phasefield/core/parameters.h>
+#include <phasefield/core/parser_messages.h>
 #include <sstream>
 
 namespace PhaseField
@@ -19,7 +20,8 @@ namespace PhaseField
                            const double       h,
                            const std::string &parameter_name)
   {
-    double value = std::numeric_limits<double>::quiet_NaN();
+    double              value = std::numeric_limits<double>::quiet_NaN();
+    const StderrCapture parser_output;
     try
       {
         FunctionParser<1> parser;
@@ -28,12 +30,10 @@ namespace PhaseField
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream info;
-        exc.print_info(info);
-        throw InputError(
-          "The parameter <" + parameter_name + "> has the value <" +
-          expression +
-          ">, which is not a valid expression in h: " + info.str());
+        throw InputError("The parameter <" + parameter_name +
+                         "> has the value <" + expression +
+                         ">, which is not a valid expression in h: " +
+                         parser_message(parser_output.text(), exc) + ".");
       }
     if (!std::isfinite(value))
       throw InputError(

@@ -1,7 +1,10 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <csetjmp>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -12,6 +15,7 @@
 #include <phasefield/core/file_io.h>
 #include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
+#include <png.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
@@ -315,6 +319,81 @@ namespace PhaseField
             std::to_string(found) + " bytes.");
       }
 
+      /** The libpng structures of one read, freed at the end. */
+      struct LibpngRead
+      {
+        png_structp png  = nullptr;
+        png_infop   info = nullptr;
+        std::FILE  *file = nullptr;
+
+        ~LibpngRead()
+        {
+          if (png != nullptr)
+            png_destroy_read_struct(&png,
+                                    info != nullptr ? &info : nullptr,
+                                    nullptr);
+          if (file != nullptr)
+            std::fclose(file);
+        }
+      };
+
+      /** libpng's error function: keep the message, return to the read. */
+      void
+      keep_libpng_error(png_structp png, png_const_charp message)
+      {
+        *static_cast<std::string *>(png_get_error_ptr(png)) = message;
+        png_longjmp(png, 1);
+      }
+
+      /** libpng's warning function: warnings are not printed. */
+      void
+      ignore_libpng_warning(png_structp, png_const_charp)
+      {}
+
+      /**
+       * Decode the PNG file @p filename with libpng, the library VTK's
+       * reader uses, row by row into the buffer of one row (whatever its
+       * size, the image takes no more memory than that): libpng's message
+       * if it finds the file damaged (a bad filter value, a palette image
+       * without palette, an invalid bit depth, an unknown critical chunk,
+       * ...), empty otherwise. libpng prints nothing: VTK's reader crashes
+       * on such files and only libpng's line would be left.
+       */
+      std::string
+      libpng_decode_error(const std::string &filename)
+      {
+        std::string           message;
+        LibpngRead            read;
+        std::vector<png_byte> row;
+        read.file = std::fopen(filename.c_str(), "rb");
+        if (read.file == nullptr)
+          return std::strerror(errno);
+        read.png = png_create_read_struct(PNG_LIBPNG_VER_STRING,
+                                          &message,
+                                          keep_libpng_error,
+                                          ignore_libpng_warning);
+        if (read.png != nullptr)
+          read.info = png_create_info_struct(read.png);
+        if (read.info == nullptr)
+          return "libpng could not start reading it";
+        // libpng returns here when it finds an error (keep_libpng_error())
+        if (setjmp(png_jmpbuf(read.png)))
+          return message.empty() ? "libpng cannot decode it" : message;
+        png_init_io(read.png, read.file);
+        png_read_info(read.png, read.info);
+        const int n_passes = png_set_interlace_handling(read.png);
+        png_read_update_info(read.png, read.info);
+        row.resize(png_get_rowbytes(read.png, read.info));
+        const png_uint_32 height = png_get_image_height(read.png, read.info);
+        for (int pass = 0; pass < n_passes; ++pass)
+          for (png_uint_32 y = 0; y < height; ++y)
+            png_read_row(read.png, row.data(), nullptr);
+        png_read_end(read.png, nullptr);
+        return "";
+      }
+
+
+
       /** Two sizes from `Geometry / Sizes` for @p shape. */
       std::vector<double>
       two_sizes(const GeometryParameters &geometry, const std::string &shape)
@@ -357,6 +436,10 @@ namespace PhaseField
         throw InputError(file + " is a damaged PNG image (truncated, or a "
                                 "chunk with a wrong checksum).");
       check_png_size(filename, file);
+      const std::string decode_error = libpng_decode_error(filename);
+      if (!decode_error.empty())
+        throw InputError(file + " is a damaged PNG image: " + decode_error +
+                         " (libpng).");
       reader->SetFileName(filename.c_str());
       // VTK reports corrupt data through its error events, not exceptions
       bool                       read_error = false;

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <functional>
+#include <phasefield/core/parser_messages.h>
 #include <phasefield/geometry/shapes.h>
 #include <sstream>
 
@@ -172,7 +173,8 @@ namespace PhaseField
       std::unique_ptr<Function<dim>>
       parsed_distance(const std::string &expression)
       {
-        auto parser = std::make_unique<FunctionParser<dim>>();
+        auto          parser = std::make_unique<FunctionParser<dim>>();
+        StderrCapture parser_output;
         try
           {
             parser->initialize(FunctionParser<dim>::default_variable_names(),
@@ -184,12 +186,11 @@ namespace PhaseField
           }
         catch (const ExceptionBase &exc)
           {
-            std::ostringstream info;
-            exc.print_info(info);
             throw InputError("The parameter <Geometry / Expression> = <" +
                              expression + "> is not a valid expression in " +
                              FunctionParser<dim>::default_variable_names() +
-                             ": " + info.str());
+                             ": " + parser_message(parser_output.text(), exc) +
+                             ".");
           }
         check_finite_on_grid(*parser, expression);
         return parser;

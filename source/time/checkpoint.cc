@@ -10,8 +10,10 @@
 #include <phasefield/core/file_io.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/statistics.h>
+#include <phasefield/mesh/saved_files.h>
 #include <phasefield/time/checkpoint.h>
 #include <sstream>
+#include <sys/resource.h>
 
 namespace PhaseField
 {
@@ -153,20 +155,18 @@ namespace PhaseField
 
 
       /**
-       * On rank 0: refuse to write a checkpoint of @p n_cells cells with
-       * @p n_fields fields into @p directory if the file system has less
-       * room than twice its expected size.
+       * On rank 0: refuse to write a checkpoint with the mesh files
+       * @p files into @p directory if the file system has less room than
+       * twice their size.
        */
       void
-      check_free_space(const std::string &directory,
-                       const double       n_cells,
-                       const unsigned int n_fields,
-                       const unsigned int dim)
+      check_free_space(const std::string                           &directory,
+                       const std::vector<SavedFiles::ExpectedFile> &files)
       {
-        // p4est's quadrants, and per cell the fields' values at its
-        // 2^dim vertices
-        const double    bytes = n_cells * (64. + 8. * n_fields * (1u << dim));
-        std::error_code error;
+        double bytes = 0;
+        for (const SavedFiles::ExpectedFile &file : files)
+          bytes += file.size;
+        std::error_code      error;
         const fs::space_info space = fs::space(directory, error);
         if (error || space.available >= 2 * bytes)
           return;
@@ -179,6 +179,56 @@ namespace PhaseField
           " MB free. The run stops here: statistics.csv and the output are "
           "complete up to this step, and the last complete checkpoint (if "
           "any) is intact.");
+      }
+
+
+
+      /**
+       * Refuse to write the mesh files @p files if one of them would be
+       * larger than this process's file size limit (`ulimit -f`): p4est
+       * aborts when its writes fail. Not collective.
+       */
+      void
+      check_file_size_limit(const std::vector<SavedFiles::ExpectedFile> &files)
+      {
+        rlimit limit;
+        if (::getrlimit(RLIMIT_FSIZE, &limit) != 0 ||
+            limit.rlim_cur == RLIM_INFINITY)
+          return;
+        for (const SavedFiles::ExpectedFile &file : files)
+          if (file.size > limit.rlim_cur)
+            throw WriteError(
+              "Cannot write the checkpoint file <" + file.filename +
+              ">: it needs " + std::to_string(file.size) +
+              " bytes, more than the file size limit of this process (" +
+              std::to_string(limit.rlim_cur) +
+              " bytes, ulimit -f). The run stops here: statistics.csv and "
+              "the output are complete up to this step, and the last "
+              "complete checkpoint (if any) is intact.");
+      }
+
+
+
+      /**
+       * Call @p read_back with the checkpoint @p path just written; an
+       * InputError of its verification is a WriteError here (the files
+       * do not hold what was written).
+       */
+      void
+      read_back_as_written(
+        const std::string                              &path,
+        const std::function<void(const std::string &)> &read_back)
+      {
+        try
+          {
+            read_back(path);
+          }
+        catch (const InputError &error)
+          {
+            throw WriteError(
+              "The checkpoint <" + path +
+              "> just written does not read back as written: " + error.what());
+          }
       }
 
 
@@ -355,33 +405,51 @@ namespace PhaseField
 
     template <int dim>
     void
-    write(const std::string         &directory,
-          const Discretization<dim> &discretization,
-          const BlockVector         &state,
-          const State               &time_stepping_state,
-          const Parameters          &parameters)
+    write(const std::string                              &directory,
+          const Discretization<dim>                      &discretization,
+          const BlockVector                              &state,
+          const State                                    &time_stepping_state,
+          const Parameters                               &parameters,
+          const std::function<void(const std::string &)> &read_back)
     {
       const MPI_Comm    comm = discretization.get_mpi_communicator();
       const std::string name =
         prefix + std::to_string(time_stepping_state.step);
-      const fs::path final_path = fs::path(directory) / name;
-      const fs::path temporary  = final_path.string() + temporary_suffix;
-      const double   n_cells =
-        discretization.get_triangulation().n_global_active_cells();
+      const fs::path     final_path = fs::path(directory) / name;
+      const fs::path     temporary  = final_path.string() + temporary_suffix;
+      const std::string  mesh       = mesh_filename(temporary.string());
+      const auto        &mesh_cells = discretization.get_triangulation();
+      const unsigned int dofs_per_cell =
+        discretization.get_dof_handler().get_fe().n_dofs_per_cell();
+      const std::vector<SavedFiles::ExpectedFile> expected =
+        SavedFiles::expected_files(mesh,
+                                   mesh_cells,
+                                   dofs_per_cell,
+                                   state.n_blocks());
+      run_on_every_rank(comm, [&]() { check_file_size_limit(expected); });
       run_on_root(comm, [&]() {
-        check_free_space(directory, n_cells, state.n_blocks(), dim);
+        check_free_space(directory, expected);
         fs::remove_all(temporary);
         fs::create_directory(temporary);
       });
-      discretization.save(mesh_filename(temporary.string()), state);
+      try
+        {
+          discretization.save(mesh, state);
+          SavedFiles::check(mesh, mesh_cells, dofs_per_cell, state.n_blocks());
+          run_on_root(comm, [&]() {
+            write_verified((temporary / state_filename).string(),
+                           to_text(time_stepping_state));
+            write_verified((temporary / metadata_filename).string(),
+                           metadata_text(temporary, parameters));
+          });
+          read_back_as_written(temporary.string(), read_back);
+        }
+      catch (...)
+        {
+          run_on_root(comm, [&]() { fs::remove_all(temporary); });
+          throw;
+        }
       run_on_root(comm, [&]() {
-        write_checked((temporary / state_filename).string(),
-                      [&](std::ostream &out) {
-                        out << to_text(time_stepping_state);
-                      });
-        const std::string metadata = metadata_text(temporary, parameters);
-        write_checked((temporary / metadata_filename).string(),
-                      [&](std::ostream &out) { out << metadata; });
         // the rename completes the checkpoint; only then the older ones go
         fs::remove_all(final_path);
         fs::rename(temporary, final_path);
@@ -493,12 +561,14 @@ namespace PhaseField
              const Discretization<2> &,
              const BlockVector &,
              const State &,
-             const Parameters &);
+             const Parameters &,
+             const std::function<void(const std::string &)> &);
     template void
     write<3>(const std::string &,
              const Discretization<3> &,
              const BlockVector &,
              const State &,
-             const Parameters &);
+             const Parameters &,
+             const std::function<void(const std::string &)> &);
   } // namespace Checkpoint
 } // namespace PhaseField

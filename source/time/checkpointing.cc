@@ -1,6 +1,8 @@
 #include <deal.II/base/exceptions.h>
 #include <phasefield/core/block_vector_tools.h>
+#include <phasefield/core/file_io.h>
 #include <phasefield/core/stop_request.h>
+#include <phasefield/mesh/saved_files.h>
 #include <phasefield/time/checkpointing.h>
 
 namespace PhaseField
@@ -88,12 +90,26 @@ namespace PhaseField
   Checkpointing<dim>::load_checkpoint(BlockVector &state)
   {
     TimerOutput::Scope t(timer, "checkpoint: load");
-    const MPI_Comm     comm = discretization.get_mpi_communicator();
     const std::string  path =
-      Checkpoint::find_last(settings.output_directory, comm);
+      Checkpoint::find_last(settings.output_directory,
+                            discretization.get_mpi_communicator());
+    std::uint64_t stored_checksum = 0;
+    return load_checkpoint_from(path, state, stored_checksum);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Checkpointing<dim>::load_checkpoint_from(const std::string &path,
+                                           BlockVector       &state,
+                                           std::uint64_t     &stored_checksum)
+  {
     const Checkpoint::State saved = read_checked_state(path);
     BlockVector             stored(saved.n_stored_fields);
     discretization.load(Checkpoint::mesh_filename(path), stored);
+    stored_checksum =
+      SavedFiles::field_checksum(discretization.get_dof_handler(), stored);
     discretization.reinit(state, saved.n_fields);
     const bool restores = saved.n_stored_fields < saved.n_fields;
     const std::vector<unsigned int> blocks =
@@ -149,24 +165,42 @@ namespace PhaseField
     // restores_after_remesh()); the reload below restores them
     BlockVector carried   = remeshing.carried_part(state);
     saved.n_stored_fields = carried.n_blocks();
+    const std::uint64_t written_checksum =
+      SavedFiles::field_checksum(discretization.get_dof_handler(), carried);
+    bool given_back = false;
+    // continue from what was written, as a resumed run does: the same
+    // cell and DoF order, a fresh solver; the checkpoint replaces the
+    // previous one only if it reads back as written
+    const auto read_back = [&](const std::string &path) {
+      remeshing.give_back(carried, state, false);
+      given_back                  = true;
+      std::uint64_t read_checksum = 0;
+      load_checkpoint_from(path, state, read_checksum);
+      if (read_checksum != written_checksum)
+        throw WriteError(
+          "The fields read back from the checkpoint <" + path +
+          "> are not those written into its mesh files (a file size limit "
+          "(ulimit -f), a quota or a full disk?). The run stops here: "
+          "statistics.csv and the output are complete up to this step, the "
+          "incomplete checkpoint is removed, and the last complete "
+          "checkpoint (if any) is intact.");
+    };
     try
       {
         Checkpoint::write(settings.output_directory,
                           discretization,
                           carried,
                           saved,
-                          settings.checkpoint_parameters);
+                          settings.checkpoint_parameters,
+                          read_back);
       }
     catch (...)
       {
-        remeshing.give_back(carried, state, false);
+        if (!given_back)
+          remeshing.give_back(carried, state, false);
         throw;
       }
-    remeshing.give_back(carried, state, false);
     pcout << "  checkpoint written after step " << step << std::endl;
-    // continue from what was written, as a resumed run does: the same
-    // cell and DoF order, a fresh solver
-    load_checkpoint(state);
   }
 
 

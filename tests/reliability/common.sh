@@ -13,8 +13,9 @@ run() {
 }
 
 # expect <case> <status> <pattern>: the last run() exited with <status>
-# (not by a timeout), printed a message matching <pattern> (grep -E) and
-# no backtrace; otherwise prints the output and sets failed=1.
+# (not by a timeout), printed a message matching <pattern> (grep -E), no
+# backtrace and no paragraph of deal.II's TimerOutput about an uncaught
+# exception; otherwise prints the output and sets failed=1.
 failed=0
 expect() {
   name="$1"; expected="$2"; pattern="$3"
@@ -28,6 +29,8 @@ expect() {
   elif printf '%s' "$output" |
       grep -Eq "Stacktrace|received signal|Segmentation|Aborted"; then
     problem="a backtrace or crash report"
+  elif printf '%s' "$output" | grep -q "exception is currently uncaught"; then
+    problem="deal.II's TimerOutput paragraph about an uncaught exception"
   fi
   if [ -n "$problem" ]; then
     echo "FAIL: $name on $ranks rank(s): $problem"

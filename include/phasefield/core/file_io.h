@@ -60,6 +60,20 @@ namespace PhaseField
   std::string
   file_checksum(const std::string &filename);
 
+  /** The 64-bit FNV-1a hash of @p data as file_checksum() writes it. */
+  std::string
+  data_checksum(const std::string &data);
+
+  /**
+   * Write @p text into @p filename as write_checked() does, then read the
+   * file back: its size and checksum must be those of @p text (a file
+   * that a file size limit or a full disk cut short without an error is
+   * found here). Throws WriteError naming the file otherwise, after
+   * removing it. Not collective.
+   */
+  void
+  write_verified(const std::string &filename, const std::string &text);
+
   /**
    * Lock the output directory @p directory for this process: rank 0
    * creates the file `phasefield.lock` there (atomically, O_CREAT |

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
+#include <phasefield/core/quiet_timer_output.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/problems/biharmonic_parameters.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
@@ -141,7 +142,8 @@ namespace PhaseField
 
     MPI_Comm                   mpi_communicator;
     dealii::ConditionalOStream pcout;
-    dealii::TimerOutput        computing_timer;
+    /** Quiet when destroyed by an exception (QuietTimerOutput). */
+    QuietTimerOutput computing_timer;
 
     Discretization<dim>                      discretization;
     std::unique_ptr<TimeSteppingScheme<dim>> scheme;

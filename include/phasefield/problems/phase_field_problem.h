@@ -7,6 +7,7 @@
 #include <memory>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
+#include <phasefield/core/quiet_timer_output.h>
 #include <phasefield/mesh/discretization.h>
 #include <phasefield/schemes/outer_energy.h>
 #include <phasefield/schemes/time_stepping_scheme.h>
@@ -212,9 +213,10 @@ namespace PhaseField
     const Setup                setup;
     const MPI_Comm             mpi_communicator;
     dealii::ConditionalOStream pcout;
-    dealii::TimerOutput        computing_timer;
-    Discretization<dim>        discretization;
-    BlockVector                solution;
+    /** Quiet when destroyed by an exception (QuietTimerOutput). */
+    QuietTimerOutput    computing_timer;
+    Discretization<dim> discretization;
+    BlockVector         solution;
 
     std::unique_ptr<TimeSteppingScheme<dim>> scheme;
 

@@ -2,6 +2,7 @@
 #define phasefield_time_checkpoint_h
 
 #include <deal.II/base/mpi.h>
+#include <functional>
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
@@ -111,19 +112,27 @@ namespace PhaseField
      * Write the checkpoint of @p state (the fields on @p discretization),
      * @p time_stepping_state and @p parameters into @p directory and
      * delete the older ones there. First checks that the file system
-     * has room for about twice the expected size (a full disk would end
-     * in an abort inside p4est); every file is checked after it is
-     * written. A failed write throws a WriteError naming the file on
-     * every rank and leaves the previous checkpoint as it is.
+     * has room for about twice the expected size and that no file would
+     * exceed the process's file size limit (a full disk would end in an
+     * abort inside p4est). Every file is read back after it is written:
+     * the mesh files must have the sizes and headers of what
+     * Discretization::save() writes (SavedFiles::check()), state.txt and
+     * checkpoint.txt the size and checksum of their text, and then
+     * @p read_back, called with the path of the complete checkpoint before
+     * it replaces the previous one, must read it and throw unless it holds
+     * what was written (@p state may be moved by then). A failed write
+     * throws a WriteError naming the file on every rank, removes the
+     * incomplete checkpoint and leaves the previous one as it is.
      * Collective.
      */
     template <int dim>
     void
-    write(const std::string         &directory,
-          const Discretization<dim> &discretization,
-          const BlockVector         &state,
-          const State               &time_stepping_state,
-          const Parameters          &parameters);
+    write(const std::string                              &directory,
+          const Discretization<dim>                      &discretization,
+          const BlockVector                              &state,
+          const State                                    &time_stepping_state,
+          const Parameters                               &parameters,
+          const std::function<void(const std::string &)> &read_back);
 
     /**
      * Verify the checkpoint @p path before it is read: every file listed

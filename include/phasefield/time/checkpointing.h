@@ -50,7 +50,10 @@ namespace PhaseField
      * of p4est (Discretization::load()), the same state and a fresh solver
      * (TimeSteppingScheme::reset_solver()). Only so are the following
      * steps bitwise those of a run resumed from this checkpoint on the
-     * same number of ranks.
+     * same number of ranks. The reload happens before the checkpoint
+     * replaces the previous one, and the fields read back must have the
+     * checksum of the fields written (SavedFiles::field_checksum());
+     * otherwise a WriteError names the checkpoint.
      */
     void
     write_checkpoint(const unsigned int step,
@@ -85,6 +88,16 @@ namespace PhaseField
      */
     Checkpoint::State
     read_checked_state(const std::string &path);
+
+    /**
+     * load_checkpoint() from the checkpoint at @p path; returns its step
+     * and sets @p stored_checksum to the SavedFiles::field_checksum() of
+     * the fields read from its mesh files.
+     */
+    unsigned int
+    load_checkpoint_from(const std::string &path,
+                         BlockVector       &state,
+                         std::uint64_t     &stored_checksum);
 
     const TimeLoopSettings           &settings;
     Discretization<dim>              &discretization;
