@@ -20,7 +20,9 @@ namespace PhaseField
   /**
    * What the time loop records of each step: a row of statistics.csv
    * (statistics_columns()), a progress line, and VTU output every
-   * `Output / VTU interval` steps and at the last step.
+   * `Output / VTU interval` steps and at the last step; in 3D with an
+   * `Output / Surface format`, the surface U = 0 at those steps and at the
+   * last step (ZeroLevelSurface).
    */
   template <int dim>
   class StepRecorder
@@ -83,6 +85,20 @@ namespace PhaseField
     /** VTU output of the fields and the curvature. */
     void
     output_results(const unsigned int step, const BlockVector &state);
+
+    /**
+     * Is the surface file of step @p step due: in 3D with a surface
+     * format, at the VTU output steps and at the last step?
+     */
+    bool
+    surface_due(const unsigned int step) const;
+
+    /**
+     * Write the surface U = 0 of @p state as surface_<step>.<format> into
+     * the output directory and print its size (3D only).
+     */
+    void
+    write_surface(const unsigned int step, const BlockVector &state);
 
     const TimeLoopSettings           &settings;
     Discretization<dim>              &discretization;
