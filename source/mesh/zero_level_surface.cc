@@ -1,12 +1,14 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstdint>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 #include <filesystem>
+#include <fstream>
 #include <phasefield/core/file_io.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/mesh/zero_level_surface.h>
@@ -239,45 +241,109 @@ namespace PhaseField
 
 
 
-      /** Write @p surface as binary STL to @p filename. */
-      void
-      write_stl(vtkPolyData &surface, const std::string &filename)
+      /**
+       * Bytes of the binary PLY file @p filename of @p n_vertices vertices
+       * and @p n_triangles triangles as vtkPLYWriter writes it: its header
+       * (up to `end_header`), 3 floats per vertex, a count byte and 3
+       * indices per triangle. 0 if the file has no complete header.
+       */
+      std::uintmax_t
+      ply_file_size(const std::string &filename,
+                    const std::size_t  n_vertices,
+                    const std::size_t  n_triangles)
       {
-        vtkNew<vtkSTLWriter> writer;
-        writer->SetInputData(&surface);
-        writer->SetFileName(filename.c_str());
-        writer->SetFileTypeToBinary();
+        constexpr std::size_t header_limit = 4096;
+        std::ifstream         in(filename, std::ios::binary);
+        std::string           header(header_limit, '\0');
+        in.read(header.data(), header_limit);
+        header.resize(in.gcount());
+        const std::string end_of_header = "end_header\n";
+        const std::size_t position      = header.find(end_of_header);
+        if (position == std::string::npos)
+          return 0;
+        constexpr std::uintmax_t vertex_bytes   = 3 * sizeof(float);
+        constexpr std::uintmax_t triangle_bytes = 1 + 3 * sizeof(std::int32_t);
+        return position + end_of_header.size() + vertex_bytes * n_vertices +
+               triangle_bytes * n_triangles;
+      }
+
+      /**
+       * Write @p surface to @p filename by @p writer (a vtkSTLWriter or
+       * vtkPLYWriter, binary) and check that the file has the
+       * @p expected_size (a function of the file name); throws WriteError
+       * otherwise, after removing the file.
+       */
+      template <typename Writer, typename Size>
+      void
+      write_checked_by(Writer            &writer,
+                       vtkPolyData       &surface,
+                       const std::string &filename,
+                       const Size        &expected_size)
+      {
+        writer.SetInputData(&surface);
+        writer.SetFileName(filename.c_str());
+        writer.SetFileTypeToBinary();
         errno = 0;
-        writer->Write();
+        writer.Write();
         const int error = errno;
         // VTK does not report every failed write (a full disk): the file
         // must have all its bytes
         std::error_code size_error;
-        if (writer->GetErrorCode() != 0 ||
-            std::filesystem::file_size(filename, size_error) !=
-              stl_file_size(surface.GetNumberOfPolys()) ||
-            size_error)
+        const auto      size = std::filesystem::file_size(filename, size_error);
+        if (writer.GetErrorCode() != 0 || size_error ||
+            size != expected_size(filename))
           {
             std::filesystem::remove(filename, size_error);
             throw WriteError(write_failure_message(filename, error));
           }
       }
 
-      /** Write @p surface as binary PLY to @p filename. */
+      /**
+       * Write a surface without triangles to @p filename in @p format
+       * (VTK's writers refuse empty data): an ASCII STL file of 0
+       * triangles (the binary one the readers take for ASCII) or a PLY
+       * file of 0 vertices and 0 faces.
+       */
       void
-      write_ply(vtkPolyData &surface, const std::string &filename)
+      write_empty_surface(const SurfaceFormat format,
+                          const std::string  &filename)
       {
-        vtkNew<vtkPLYWriter> writer;
-        writer->SetInputData(&surface);
-        writer->SetFileTypeToBinary();
-        writer->WriteToOutputStringOn();
-        writer->Write();
-        AssertThrow(writer->GetErrorCode() == 0,
-                    ExcMessage("VTK could not encode the surface of " +
-                               filename + " as PLY."));
         write_checked(filename, [&](std::ostream &out) {
-          out << writer->GetOutputString();
+          if (format == SurfaceFormat::stl)
+            out << "solid surface\nendsolid surface\n";
+          else
+            out << "ply\nformat binary_little_endian 1.0\n"
+                << "element vertex 0\nproperty float x\nproperty float y\n"
+                << "property float z\nelement face 0\n"
+                << "property list uchar int vertex_indices\nend_header\n";
         });
+      }
+
+      /** Write @p surface to @p filename in @p format. */
+      void
+      write_surface(vtkPolyData        &surface,
+                    const SurfaceFormat format,
+                    const std::string  &filename)
+      {
+        const std::size_t n_triangles = surface.GetNumberOfPolys();
+        const std::size_t n_vertices  = surface.GetNumberOfPoints();
+        if (n_triangles == 0)
+          write_empty_surface(format, filename);
+        else if (format == SurfaceFormat::stl)
+          {
+            vtkNew<vtkSTLWriter> writer;
+            write_checked_by(*writer, surface, filename, [&](const auto &) {
+              return stl_file_size(n_triangles);
+            });
+          }
+        else
+          {
+            vtkNew<vtkPLYWriter> writer;
+            writer->SetDataByteOrderToLittleEndian();
+            write_checked_by(*writer, surface, filename, [&](const auto &name) {
+              return ply_file_size(name, n_vertices, n_triangles);
+            });
+          }
       }
     } // namespace
 
@@ -358,15 +424,12 @@ namespace PhaseField
       run_on_root(mpi_communicator, [&]() {
         const vtkSmartPointer<vtkPolyData> surface = merged_surface(all);
         summary                                    = summarize(*surface);
-        if (format == SurfaceFormat::stl)
-          write_stl(*surface, filename);
-        else
-          write_ply(*surface, filename);
+        write_surface(*surface, format, filename);
       });
-      std::array<double, 4> numbers = {double(summary.n_triangles),
-                                       double(summary.n_vertices),
-                                       summary.area,
-                                       summary.volume};
+      std::array<double, 4> numbers = {{double(summary.n_triangles),
+                                        double(summary.n_vertices),
+                                        summary.area,
+                                        summary.volume}};
       numbers = Utilities::MPI::broadcast(mpi_communicator, numbers, 0);
       return {static_cast<unsigned int>(numbers[0]),
               static_cast<unsigned int>(numbers[1]),
