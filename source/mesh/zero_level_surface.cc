@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -22,6 +23,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSTLWriter.h>
+#include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 
 namespace PhaseField
@@ -349,45 +351,66 @@ namespace PhaseField
 
 
 
+    namespace
+    {
+      /**
+       * The locally owned cells of @p dof_handler on which @p ghosted_u
+       * has a zero, each sampled on the lattice of the finest level, as
+       * hexahedra with the values of U at their points.
+       */
+      vtkSmartPointer<vtkUnstructuredGrid>
+      sampled_cut_cells(const DoFHandler<3> &dof_handler,
+                        const Vector        &ghosted_u)
+      {
+        AssertDimension(dof_handler.get_fe().n_dofs_per_cell(),
+                        GeometryInfo<3>::vertices_per_cell);
+        const unsigned int finest_level =
+          dof_handler.get_triangulation().n_global_levels() - 1;
+        vtkNew<vtkPoints> points;
+        points->SetDataTypeToDouble();
+        vtkNew<vtkDoubleArray> scalars;
+        scalars->SetName("U");
+        auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+        grid->AllocateEstimate(0, GeometryInfo<3>::vertices_per_cell);
+        dealii::Vector<double>  dof_values(GeometryInfo<3>::vertices_per_cell);
+        std::array<double, 8>   values;
+        std::array<Point<3>, 8> vertices;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              // Q1: the cell's DoFs are the values at its vertices
+              cell->get_dof_values(ghosted_u, dof_values);
+              for (unsigned int v = 0; v < 8; ++v)
+                {
+                  values[v]   = dof_values[v];
+                  vertices[v] = cell->vertex(v);
+                }
+              const auto [minimum, maximum] =
+                std::minmax_element(values.begin(), values.end());
+              if (*minimum > 0 || *maximum < 0)
+                continue;
+              add_sampled_cell(vertices,
+                               values,
+                               1U << (finest_level - cell->level()),
+                               *points,
+                               *scalars,
+                               *grid);
+            }
+        grid->SetPoints(points);
+        grid->GetPointData()->SetScalars(scalars);
+        return grid;
+      }
+    } // namespace
+
+
+
     std::vector<double>
     local_triangles(const DoFHandler<3> &dof_handler, const Vector &ghosted_u)
     {
-      const unsigned int finest_level =
-        dof_handler.get_triangulation().n_global_levels() - 1;
-      vtkNew<vtkPoints> points;
-      points->SetDataTypeToDouble();
-      vtkNew<vtkDoubleArray> scalars;
-      scalars->SetName("U");
-      vtkNew<vtkUnstructuredGrid> grid;
-      grid->AllocateEstimate(0, 8);
-      dealii::Vector<double> dof_values(dof_handler.get_fe().n_dofs_per_cell());
-      std::array<double, 8>  values;
-      std::array<Point<3>, 8> vertices;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            // Q1: the cell's DoFs are the values at its vertices
-            cell->get_dof_values(ghosted_u, dof_values);
-            for (unsigned int v = 0; v < 8; ++v)
-              {
-                values[v]   = dof_values[v];
-                vertices[v] = cell->vertex(v);
-              }
-            const auto [minimum, maximum] =
-              std::minmax_element(values.begin(), values.end());
-            if (*minimum > 0 || *maximum < 0)
-              continue;
-            add_sampled_cell(vertices,
-                             values,
-                             1U << (finest_level - cell->level()),
-                             *points,
-                             *scalars,
-                             *grid);
-          }
+      const vtkSmartPointer<vtkUnstructuredGrid> grid =
+        sampled_cut_cells(dof_handler, ghosted_u);
       if (grid->GetNumberOfCells() == 0)
         return {};
-      grid->SetPoints(points);
-      grid->GetPointData()->SetScalars(scalars);
       vtkNew<vtkContourFilter> contour;
       contour->SetInputData(grid);
       contour->SetValue(0, 0.);
