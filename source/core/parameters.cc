@@ -750,6 +750,18 @@ namespace PhaseField
                       "scheme, the energy check of every step (energy + "
                       "dissipation - energy before the step) and the "
                       "energy change at every re-meshing.");
+    prm.declare_entry(
+      "Surface format",
+      "none",
+      Patterns::Selection("none|stl|ply"),
+      "3D runs: write the surface U = 0 (marching cubes on the Q1 field, "
+      "every cell that the surface cuts sampled on the finest level's "
+      "lattice) as surface_<step>.stl (binary STL) or surface_<step>.ply "
+      "(binary PLY with shared vertices) into the output directory, at "
+      "every VTU output step and at the last step (also with VTU interval "
+      "= 0): one file of all ranks' triangles, to open in ParaView, "
+      "MeshLab, Blender or a slicer. 2D runs write no surface files. none: "
+      "no surface files.");
     prm.leave_subsection();
   }
 
@@ -759,8 +771,12 @@ namespace PhaseField
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    vtu_interval = prm.get_integer("VTU interval");
-    verbose      = prm.get_bool("Verbose");
+    vtu_interval             = prm.get_integer("VTU interval");
+    verbose                  = prm.get_bool("Verbose");
+    const std::string format = prm.get("Surface format");
+    surface_format           = format == "stl" ? SurfaceFormat::stl :
+                               format == "ply" ? SurfaceFormat::ply :
+                                                 SurfaceFormat::none;
     prm.leave_subsection();
   }
 

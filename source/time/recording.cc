@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <iomanip>
+#include <phasefield/mesh/zero_level_surface.h>
 #include <phasefield/schemes/energy_term_registry.h>
 #include <phasefield/time/finite_fields.h>
 #include <phasefield/time/recording.h>
@@ -150,6 +151,8 @@ namespace PhaseField
     if (with_output && settings.vtu_interval > 0 &&
         (step % settings.vtu_interval == 0 || step == data.final_step || last))
       output_results(step, state);
+    if (with_output && surface_due(step, last))
+      write_surface(step, state);
   }
 
 
@@ -207,6 +210,50 @@ namespace PhaseField
                                 step,
                                 data.time,
                                 fields);
+  }
+
+
+
+  template <int dim>
+  bool
+  StepRecorder<dim>::surface_due(const unsigned int step, const bool last) const
+  {
+    return dim == 3 && settings.surface_format != SurfaceFormat::none &&
+           (step == data.final_step || last ||
+            (settings.vtu_interval > 0 && step % settings.vtu_interval == 0));
+  }
+
+
+
+  template <int dim>
+  void
+  StepRecorder<dim>::write_surface(const unsigned int step,
+                                   const BlockVector &state)
+  {
+    if constexpr (dim == 3)
+      {
+        TimerOutput::Scope     t(timer, "output: surface");
+        constexpr unsigned int n_digits = 5;
+        const std::string      name =
+          "surface_" + Utilities::int_to_string(step, n_digits) + "." +
+          ZeroLevelSurface::extension(settings.surface_format);
+        // the continuous Q1 field: hanging nodes on their constraints
+        Vector u = state.block(0);
+        discretization.get_constraints().distribute(u);
+        const ZeroLevelSurface::Summary surface =
+          ZeroLevelSurface::write(discretization.get_dof_handler(),
+                                  discretization.ghosted_copy(u),
+                                  settings.surface_format,
+                                  settings.output_directory + "/" + name);
+        pcout << "  " << name << ": " << surface.n_triangles
+              << " triangles, area " << std::setprecision(6) << surface.area
+              << ", enclosed volume " << surface.volume << std::endl;
+      }
+    else
+      {
+        (void)step;
+        (void)state;
+      }
   }
 
 

@@ -29,6 +29,7 @@ namespace PhaseField
     s.adaptive                 = parameters.mesh.adaptive;
     s.refinement_interval      = parameters.mesh.refinement_interval;
     s.vtu_interval             = parameters.output.vtu_interval;
+    s.surface_format           = parameters.output.surface_format;
     s.verbose                  = parameters.output.verbose;
     s.output_directory         = parameters.output_directory;
     s.checkpoint_interval      = parameters.checkpoint.interval;

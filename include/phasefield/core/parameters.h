@@ -427,12 +427,31 @@ namespace PhaseField
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /**
+   * File format of the zero level set of U as a triangulated surface
+   * (`Output / Surface format`; mesh/zero_level_surface.h).
+   */
+  enum class SurfaceFormat
+  {
+    /** No surface files. */
+    none,
+    /** Binary STL (a triangle soup, 50 bytes per triangle). */
+    stl,
+    /** Binary PLY (shared vertices and triangles). */
+    ply
+  };
+
   /** Subsection `Output`. */
   struct OutputParameters
   {
     /** Write VTU every this many steps (0: never). */
     unsigned int vtu_interval;
     bool         verbose;
+    /**
+     * Write the surface U = 0 of a 3D run in this format at the VTU
+     * output steps and at the last step (nothing in 2D).
+     */
+    SurfaceFormat surface_format;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -21,9 +21,11 @@ namespace PhaseField
   /**
    * What the time loop records of each step: a row of statistics.csv
    * (statistics_columns()), a progress line, and VTU output every
-   * `Output / VTU interval` steps and at the last step. The step-size
-   * policy's columns (StepSizePolicy::statistics_columns()) follow
-   * `step_halvings`, and the progress line shows them with tau.
+   * `Output / VTU interval` steps and at the last step; in 3D with an
+   * `Output / Surface format`, the surface U = 0 at those steps and at the
+   * last step (ZeroLevelSurface). The step-size policy's columns
+   * (StepSizePolicy::statistics_columns()) follow `step_halvings`, and
+   * the progress line shows them with tau.
    */
   template <int dim>
   class StepRecorder
@@ -91,6 +93,21 @@ namespace PhaseField
     /** VTU output of the fields and the curvature. */
     void
     output_results(const unsigned int step, const BlockVector &state);
+
+    /**
+     * Is the surface file of step @p step due: in 3D with a surface
+     * format, at the VTU output steps and at the last step (@p last: the
+     * run ends with this step)?
+     */
+    bool
+    surface_due(const unsigned int step, const bool last) const;
+
+    /**
+     * Write the surface U = 0 of @p state as surface_<step>.<format> into
+     * the output directory and print its size (3D only).
+     */
+    void
+    write_surface(const unsigned int step, const BlockVector &state);
 
     const TimeLoopSettings           &settings;
     Discretization<dim>              &discretization;

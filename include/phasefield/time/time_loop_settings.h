@@ -24,8 +24,10 @@ namespace PhaseField
     bool         adaptive;
     unsigned int refinement_interval;
     unsigned int vtu_interval;
-    bool         verbose;
-    std::string  output_directory;
+    /** OutputParameters::surface_format. */
+    SurfaceFormat surface_format = SurfaceFormat::none;
+    bool          verbose;
+    std::string   output_directory;
     /** Write a checkpoint every this many steps (0: never). */
     unsigned int checkpoint_interval;
     /**
