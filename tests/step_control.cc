@@ -9,17 +9,16 @@
 //    same end time: it must end there exactly, every accepted step's
 //    estimate must be within the tolerance, the steps must grow beyond
 //    3 h^2, take fewer than half the fixed steps, and reach the fixed
-//    steps' L2 error within 5% (the spatial error dominates: at h = 2^-8
-//    the fixed steps' error is 1.39e-3, and 20 steps of 4 h^2 make 1.43e-3,
-//    issue 68). A controller that does not grow the steps, or grows them
-//    beyond its tolerance, fails one of these.
+//    steps' L2 error within 5% (the spatial error
+//    dominates at h = 2^-8). A controller that does not grow the steps, or
+//    grows them beyond its tolerance, fails one of these.
 // 3. `Stationary tolerance` = 10 at level 7 with adaptive steps: the run
 //    must end after the first step whose relative change of the energy
 //    (W here) per unit time, |W(k) - W(k-1)| / (tau W(k)), is below 10,
 //    and not before, within its 200 steps. (For the sharp interface
 //    W ~ 1 / r and the rate is r'/r = 1 / (2 r^4), 19.5 at r0 = 0.4; at
-//    eps = 2h the diffuse W starts a third above the sharp one and falls
-//    faster: the run ends at t = 0.0030, r = 0.420.)
+//    eps = 2h the diffuse W starts above the sharp one and falls faster,
+//    so the end time is not compared with the sharp law.)
 
 #include "tests.h"
 

@@ -203,8 +203,7 @@ namespace PhaseField
    * two steps, the first after a resume) the size is kept: the first step
    * of a run relaxes the initial data to the discrete profile as well as
    * moving it, a change that is not of the order tau, and is not compared
-   * with (on the level-7 quarter circle at tau = h^2 it made the estimate
-   * of step 2 fall only linearly with its size).
+   * with (the estimate of step 2 would fall only linearly with its size).
    */
   class AdaptiveStepSizes : public StepSizePolicy
   {
