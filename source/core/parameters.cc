@@ -600,10 +600,9 @@ namespace PhaseField
                       "the nested scheme |U| + a |V-U| + |P| in the mass "
                       "norm): a tolerance relative to the scale of R, "
                       "which ends the Newton iteration of a step in which "
-                      "the solution hardly changes (1e-12 until "
-                      "2026-11-27; doc/benchmarks.md, \"Eisenstat-Walker "
-                      "forcing terms; Newton tolerances of nearly "
-                      "stationary steps\").");
+                      "the solution hardly changes (doc/benchmarks.md, "
+                      "\"Eisenstat-Walker forcing terms; Newton "
+                      "tolerances of nearly stationary steps\").");
     prm.declare_entry("Maximum iterations",
                       "30",
                       Patterns::Integer(1),

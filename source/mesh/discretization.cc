@@ -362,8 +362,7 @@ namespace PhaseField
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
     transfer.deserialize(out);
     // what the old mesh and the unpacking freed goes back to the system,
-    // as after a re-meshing (level-7 torus, 2 ranks, a checkpoint after
-    // every step: RSS between the steps 2.3 GB without this, 1.2 GB with)
+    // as after a re-meshing (doc/benchmarks.md, "Choices in the code")
     return_free_heap_memory();
   }
 
@@ -510,8 +509,8 @@ namespace PhaseField
       transfer.prepare_for_coarsening_and_refinement(in);
       // the operators of the old mesh are not needed any more: free them
       // before the refinement packs the fields, the peak of a re-meshing,
-      // and return the pages the solver left free to the system (level-7
-      // torus contour, 2 ranks: RSS before the packing 1.57 -> 1.26 GB)
+      // and return the pages the solver left free to the system
+      // (doc/benchmarks.md, "Choices in the code")
       operators.release();
       return_free_heap_memory();
       triangulation.execute_coarsening_and_refinement();

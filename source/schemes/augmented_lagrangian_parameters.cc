@@ -39,9 +39,8 @@ namespace PhaseField
       Patterns::Double(1),
       "Each step after the first starts from the final penalty of the "
       "previous step divided by this, but not below lambda0 (thesis: "
-      "100^2). Measured (doc/willmore_flow.md, \"Penalty per step\"): 10 "
-      "needs about 3 times fewer trust-region iterations per step than "
-      "100^2 on the level-7 quarter circle and edge-restoration cross.");
+      "100^2). 10 needs fewer trust-region iterations per step than "
+      "100^2 (doc/willmore_flow.md, \"Penalty per step\").");
     prm.declare_entry("Initial multiplier",
                       text(defaults.initial_multiplier),
                       Patterns::Double(),
@@ -101,7 +100,7 @@ namespace PhaseField
     if (!(initial_penalty > 0))
       throw InputError(
         "<Augmented Lagrangian / Initial penalty> must be positive.");
-    // measured: on 2 ranks ROL's trust region does not reach the gradient
+    // on 2 ranks ROL's trust region does not reach the gradient
     // tolerance of tests/rol_trust_region.cc (not investigated)
     if (rol_trust_region &&
         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)

@@ -210,9 +210,8 @@ namespace PhaseField
     // With U fixed outside a region (edge restoration), and in the first
     // step after initialize() with restoration terms, the descent method
     // directly. Otherwise Newton's method with residual damping first: it
-    // needs no inner problems (fig6_5_disc.prm, 10 level-6 steps: the
-    // same states to the Newton tolerance in 2.0 s instead of 5.8 s of
-    // user time).
+    // needs no inner problems and reaches the same states in less time
+    // (doc/benchmarks.md, "Choices in the code").
     const bool first_step  = first_step_from_initial_data;
     const bool restoration = settings.outer_energy.has_restoration_terms();
     if (solves_by_descent() || (first_step && restoration))

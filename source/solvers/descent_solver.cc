@@ -170,8 +170,8 @@ namespace PhaseField
       catch (const SolverControl::NoConvergence &exc)
         {
           // a Krylov solve is collective: it fails on all ranks. A larger
-          // shift is better conditioned (the level-8 cube: CG did not
-          // reach its tolerance in 1000 iterations with shift 0)
+          // shift is better conditioned (CG on the first step of the
+          // level-8 cube needs one)
           report.linear_iterations += exc.last_step;
           raise_shift();
           if (shift > max_shift)

@@ -2,7 +2,7 @@
 # Usage: write_failure.sh <ranks> <mpiexec> <build directory> <work dir>
 # A write that fails (a full disk) stops the run with exit status 1 and a
 # message naming the file, on every rank, without a hang or a backtrace
-# (doc/willmore_flow.md, "Output and exit statuses"). The failures are
+# (doc/willmore_flow.md, "Running it"). The failures are
 # provoked without root: a symbolic link to /dev/full (every write fails
 # with ENOSPC when flushed) in place of
 #  - statistics.csv (its header);

@@ -16,9 +16,8 @@ namespace PhaseField
    * kernels. On such a CPU this function selects OpenBLAS's SkylakeX
    * kernels if the CPU has AVX-512 (F, CD, DQ, BW, VL), else its Haswell
    * kernels if it has AVX2 and FMA, as the environment variable
-   * OPENBLAS_CORETYPE would have at load time. The quarter circle at
-   * h = 2^-9 on 2 ranks then takes 8.5-8.75 s instead of 10.9-11.1 s
-   * (doc/benchmarks.md, "OpenBLAS kernels").
+   * OPENBLAS_CORETYPE would have at load time, and the runs with the
+   * direct solver are faster (doc/benchmarks.md, "OpenBLAS kernels").
    *
    * Nothing is changed if OPENBLAS_CORETYPE is set (the user's choice),
    * if the BLAS library is not OpenBLAS with run-time kernel selection, or

@@ -79,7 +79,8 @@ namespace PhaseField
      * interface but the axes (where both agree). This matters when h is
      * not small against eps: for the quarter circle at h = eps/2 the
      * semi-implicit Willmore energy of the sampled tanh profile is 5.61
-     * instead of 10.98 (exact 1.96; doc/willmore_flow.md).
+     * instead of 10.98 (exact 1.96; doc/willmore_flow.md, "Known
+     * limitations").
      */
     gauss_lobatto
   };

@@ -10,19 +10,18 @@ namespace PhaseField
 {
   /**
    * Largest coarsest-level matrix of the multigrid hierarchies; ML
-   * factorises it (KLU) at every set-up. deal.II's default, 2000, made
-   * this factorisation 15% of all instructions of a 3D level-5 cube step
-   * (callgrind, 1 rank). With 200, that step took 39.9e9 instead of
-   * 46.1e9 instructions (the AMG set-ups 7.8e9 instead of 14.6e9) and 210
-   * instead of 195 CG iterations.
+   * factorises it (KLU) at every set-up. With deal.II's default, 2000,
+   * this factorisation was a large part of a 3D step's work; 200 costs a
+   * few more CG iterations (doc/benchmarks.md, "Choices in the code").
    */
   constexpr unsigned int multigrid_coarse_size = 200;
 
   /**
    * Chebyshev sweeps (the smoother's polynomial degree) per level, before
    * and after the coarse correction, of a multigrid cycle that stands for
-   * G^-1 in a CG solve with G (measured on the 3D cube: two sweeps need
-   * twice the CG iterations, more than three do not pay).
+   * G^-1 in a CG solve with G (two sweeps need about twice the CG
+   * iterations, more than three do not pay; doc/benchmarks.md, "Choices in
+   * the code").
    */
   constexpr unsigned int multigrid_smoother_sweeps = 3;
 

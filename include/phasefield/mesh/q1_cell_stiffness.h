@@ -16,9 +16,8 @@ namespace PhaseField
    * the unit cube with the stiffness rule, is precomputed, so a cell costs
    * 2^dim x 2^dim multiply-adds instead of the evaluation and integration at
    * the quadrature points of the general FEEvaluation path, whose evaluate()
-   * and integrate() took 50% of the perf samples of a 1-step level-5
-   * sphere on 1 rank; with this kernel the 3-step run on 2 ranks took
-   * 29 s instead of 67 s.
+   * and integrate() dominated the matrix-free runs (doc/benchmarks.md, "Choices
+   * in the code").
    */
   template <int dim, typename Number>
   class Q1CellStiffness

@@ -29,9 +29,8 @@ namespace PhaseField
    * apply_add() reads the constrained values C x, applies the cell matrices
    * and adds C^T of the result, as FEEvaluation::read_dof_values() and
    * distribute_local_to_global() do. 33 bytes per cell (3D) and the
-   * constraints: with these tables in place of the MatrixFree objects the
-   * peak of the level-8 sphere fell from 6074 to 5325 MiB (doc/scaling.md,
-   * "Without MatrixFree objects").
+   * constraints, less than the MatrixFree objects they replace
+   * (doc/benchmarks.md, "Choices in the code").
    */
   template <int dim>
   class Q1Cells

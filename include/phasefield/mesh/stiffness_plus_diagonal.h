@@ -15,9 +15,8 @@ namespace PhaseField
    * its Schur preconditioner have this form
    * (LumpedOperators::stiffness_plus_weighted_mass()): kept as operators,
    * each costs one vector instead of a sparse matrix of the size of L, and
-   * a product with it costs the same as with the matrix (at the level-8
-   * cube, 2.5M rows per field, the three matrices took 1.7 GB;
-   * doc/scaling.md).
+   * a product with it costs the same as with the matrix
+   * (doc/benchmarks.md, "Choices in the code").
    *
    * It is an Epetra_RowMatrix, so that an algebraic multigrid (ML) can be
    * set up from it: ML reads its rows one at a time (ExtractMyRowCopy())

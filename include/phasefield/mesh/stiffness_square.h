@@ -30,7 +30,8 @@ namespace PhaseField
    * into a matrix of the same sparsity pattern each time (so that a direct
    * solver can reuse its analysis). The sparse product of Khat with
    * itself in every Newton iteration, with its allocations and sorting,
-   * was 10% of the instructions of 10 quarter-circle steps at h = 2^-9.
+   * was a noticeable part of a 2D run (doc/benchmarks.md, "Choices in the
+   * code").
    *
    * The object refers to @p operators: build a new one when they change
    * (re-meshing).

@@ -74,9 +74,9 @@ namespace PhaseField
    * With U fixed at some DoFs (edge restoration) U is eliminated only at
    * the free ones; at a fixed DoF the exact S_V has the nodal weights
    * b = 0, w = lambda, m = s a instead. The direct path assembles S_V with
-   * these nodal weights (level-7 cross of edge restoration, step 1: 177 CG
-   * iterations in 69 trust-region iterations, against 14405 in 83 with the
-   * weights of the free DoFs everywhere); the product form keeps the
+   * these nodal weights (with the weights of the free DoFs everywhere the
+   * CG iterations of edge restoration grow by two orders of magnitude,
+   * (doc/benchmarks.md, "Choices in the code")); the product form keeps the
    * weights of the free DoFs.
    */
   template <int dim>

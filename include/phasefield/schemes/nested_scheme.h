@@ -132,10 +132,9 @@ namespace PhaseField
      * Gauss-Newton model with the curvature of the majoriser, floored),
      * which bounds the term from above only up to the floor and where
      * alpha crosses alpha*, so that the energy law with the term itself
-     * holds to second order in the step, not to round-off. Measured on the
-     * built-in default at level 5 near the level's stationary state: rises
-     * of up to 1.4e-5 relative (doc/shape_from_contour.md, "The monolithic
-     * coupling").
+     * holds to second order in the step, not to round-off: near a
+     * stationary state the rises stay an order of magnitude below this
+     * (doc/benchmarks.md, "Choices in the code").
      */
     static constexpr double data_term_energy_law_tolerance = 1e-4;
     /** NestedModel::dissipation(). */

@@ -201,8 +201,8 @@ namespace PhaseField
    * it; auto is direct in 2D, and in 3D iterative on the matrix-free
    * backend if the scheme runs on it (SchemeEntry::matrix_free) and the
    * boundary conditions are not periodic (@p periodic), on the assembled
-   * one otherwise. The measurements behind the choice: doc/scaling.md,
-   * "Leaner set-up and a direct level kernel".
+   * one otherwise. The measurements behind the choice: doc/benchmarks.md,
+   * "3D linear solver: iterative against matrix-free".
    */
   SolverChoice
   resolve_solver_choice(const LinearSolverParameters &solver,

@@ -158,9 +158,7 @@ namespace PhaseField
      * Free what the scheme keeps for the current mesh (multigrid
      * hierarchies, factorisations, matrices): called when the mesh is about
      * to change, so that these and the new mesh's DoFs and matrices do not
-     * exist at once (level-7 cube, 3 steps: peak memory 2331 MB, 2564 MB (10
-     * steps) when they were freed after the transfer; doc/benchmarks.md, "The
-     * watchdog with a return"). after_remesh()
+     * exist at once (doc/benchmarks.md, "Choices in the code"). after_remesh()
      * follows.
      */
     virtual void
@@ -180,9 +178,8 @@ namespace PhaseField
      * from the others, so that a change of the mesh need not carry it:
      * the field then arrives as zero. Each field a transfer does not
      * carry saves its packing, the largest transient of a re-meshing
-     * (level-7 torus contour, 2 ranks: RSS 1.57 GB at the end of a step,
-     * 2.00 GB at the re-meshing's peak with the three nested fields
-     * carried, 1.70 GB with U alone). Default: every field is carried.
+     * (doc/benchmarks.md, "Choices in the code"). Default: every field is
+     * carried.
      */
     virtual bool
     restores_after_remesh(const unsigned int field) const

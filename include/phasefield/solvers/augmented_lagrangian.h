@@ -184,8 +184,9 @@ namespace PhaseField
      * higher than at its start by more than this, relative, is repeated
      * with a larger penalty. The outer energy's round-off at the end of a
      * step is about eta* / ttau relative (the curvature (U-V)/ttau carries
-     * ||C||): measured rises at stationary states 7e-6; the rises this
-     * guards against were 0.09-0.5 (relative).
+     * ||C||): the rises at stationary states lie far below this
+     * tolerance, the rises it guards against far above it
+     * (doc/benchmarks.md, "Choices in the code").
      */
     constexpr double monotonicity_tolerance = 1e-3;
     /** Repetitions of a step with a rising outer energy. */

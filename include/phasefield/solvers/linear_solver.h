@@ -66,8 +66,7 @@ namespace PhaseField
      * The decades of residual reduction that a preconditioned CG solve
      * from zero gains at almost no cost, for the iteration model of the
      * kept hierarchies: a solve to D decades takes about r (D - 0.5)
-     * iterations (doc/benchmarks.md, "Where the CG growth per level comes
-     * from; the kept hierarchy's iteration model").
+     * iterations (doc/benchmarks.md, "Choices in the code").
      */
     static constexpr double free_start_decades = 0.5;
 
@@ -76,8 +75,7 @@ namespace PhaseField
      * since the set-up of a kept hierarchy: for V = tanh(d/eps),
      * |d/dd (1 - V^2)| <= 0.77/eps, so 0.2 allows the interface to move by
      * at least a quarter of eps (doc/benchmarks.md, "Keeping the multigrid
-     * hierarchy": without it the level-7 cube's first step took 1774
-     * instead of 669 CG iterations).
+     * hierarchy" and "Choices in the code").
      */
     static constexpr double interface_mode_tolerance = 0.2;
 

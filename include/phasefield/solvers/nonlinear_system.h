@@ -256,8 +256,8 @@ namespace PhaseField
                     const double         norm);
 
       /**
-       * Largest (and first) forcing term. 0.1 measured against 0.3 and
-       * against the fixed first tolerance 1e-3 used before
+       * Largest (and first) forcing term, 0.1, chosen against 0.3 and
+       * against a fixed first tolerance 1e-3
        * (doc/benchmarks.md, "Eisenstat-Walker forcing terms; Newton
        * tolerances of nearly stationary steps").
        */
@@ -266,9 +266,9 @@ namespace PhaseField
       /**
        * Smallest reduction target / |R_0| that the first linear solve
        * aims at directly: three decades, the first tolerance of the direct
-       * solver. Four decades were measured and
-       * gave nothing: there the linear model no longer held
-       * (doc/benchmarks.md, "A first solve to the target").
+       * solver. Four decades gave nothing: there
+       * the linear model no longer held (doc/benchmarks.md, "Choices in the
+       * code").
        */
       static constexpr double min_reachable_reduction = 1e-3;
 

@@ -19,9 +19,8 @@ namespace PhaseField
    * Chebyshev sweeps of the cycles inside the product G^-1 M G^-1
    * (SchurPreconditioner). There the cycle's error matters in the norm of
    * M, not of G, and more smoothing reduces the part that the G-norm
-   * hides: 6 sweeps took 37-43 CG iterations per Newton system of the
-   * level-8 sphere against 67-68 with 3 (doc/benchmarks.md, "Smoothing
-   * inside the product").
+   * hides: 6 sweeps need far fewer CG iterations per Newton system than 3
+   * (doc/benchmarks.md, "Choices in the code").
    */
   constexpr unsigned int schur_smoother_sweeps = 6;
 

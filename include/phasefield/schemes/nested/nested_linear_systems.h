@@ -179,11 +179,10 @@ namespace PhaseField
      * (1 + a) M by about eta ttau^2/h^2 (eta h^2 for ttau = h^2), so a few
      * GMRES iterations suffice, and only the scalar S is factorised
      * instead of the 3-field matrix. The data term's Hessian H_d of the
-     * monolithic contour coupling is left to GMRES (50-250 iterations per
-     * Newton system); an elimination that holds it (S + K M^-1 H_d M^-1 K
-     * by inner CG, commit 73c3b27) took 5-7 times fewer GMRES iterations
-     * but more time (doc/shape_from_contour.md, "The preconditioner with
-     * the data term"). Returns the GMRES iterations.
+     * monolithic contour coupling is left to GMRES; an elimination that
+     * holds it (S + K M^-1 H_d M^-1 K by inner CG, commit 73c3b27) took
+     * fewer GMRES iterations but more time (doc/benchmarks.md, "Choices in the
+     * code"). Returns the GMRES iterations.
      */
     unsigned int
     solve_area_system(const BlockVector &z,
