@@ -7,9 +7,9 @@
 # iteration of step 1, the first solve tight enough to need more, fails,
 # while the inner problem for V at step 0 does not (with a coarsest
 # multigrid level of at most 200 unknowns, the AMG of this 2D level-5 mesh
-# is no longer a direct solve). The limit was 8 with the 3-sweep cycles
-# of the Schur preconditioner before 2026-11-28; with 6 sweeps step 1
-# converges at 8 (6 Newton, 29 CG iterations). Step 1 is
+# is not a direct solve). With the 6-sweep cycles of the Schur
+# preconditioner step 1 converges at a limit of 8 (6 Newton, 29 CG
+# iterations), hence 7. Step 1 is
 # the first step from the initial data, so the descent method takes over
 # from its start: it raises its shift where the linear solver does not
 # converge (reported) and finishes the step. Step 2 then fails in the

@@ -40,7 +40,7 @@ for prm in parameter_files/*/*.prm; do
     willmore_flow/al_cube_*)
       # the augmented Lagrangian's cube at level 5 vanishes at tau and is
       # taken at tau/2 (Largest inside change factor): one step
-      # shows that the file runs, in 20 s instead of 57 s for two
+      # shows that the file runs
       run "$build_dir/$program" "$prm" --set "Mesh/Finest level=5" \
         --set "Time stepping/Number of steps=1" \
         --set "Phase field/Epsilon=4*h" \
