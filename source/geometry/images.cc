@@ -33,6 +33,37 @@ namespace PhaseField
 
     namespace
     {
+      /** Largest value of a colour channel. */
+      constexpr unsigned char full_channel = 255;
+
+      /**
+       * The gray pixels (RGB) of phase-field values on an n x n grid:
+       * black for U <= -1 (inside), white for U >= +1.
+       */
+      std::vector<unsigned char>
+      gray_pixels(const std::vector<double> &values, const unsigned int n)
+      {
+        std::vector<unsigned char> rgb(3 * n * n);
+        for (unsigned int k = 0; k < n * n; ++k)
+          {
+            const double u = std::clamp(values[k], -1., 1.);
+            rgb[3 * k] = rgb[3 * k + 1] = rgb[3 * k + 2] =
+              static_cast<unsigned char>(
+                std::lround(0.5 * (u + 1) * full_channel));
+          }
+        return rgb;
+      }
+
+      /** Draw pixel @p k red (outlines and level lines). */
+      void
+      mark_pixel(std::vector<unsigned char> &rgb, const unsigned int k)
+      {
+        rgb[3 * k]     = full_channel;
+        rgb[3 * k + 1] = rgb[3 * k + 2] = 0;
+      }
+
+
+
       /** Value standing for "no feature pixel" in the distance transform. */
       constexpr double far_away = 1e20;
 
@@ -602,9 +633,8 @@ namespace PhaseField
                   const Box2D               &region,
                   const std::string         &filename)
     {
-      constexpr double        outline_width = 1.5; // pixels
-      constexpr unsigned char full          = 255;
-      const auto              near = [&](const double pixel, const double x) {
+      constexpr double outline_width = 1.5; // pixels
+      const auto       near          = [&](const double pixel, const double x) {
         return std::abs(pixel - (x * n - 0.5)) <= outline_width / 2;
       };
       const auto between =
@@ -612,25 +642,38 @@ namespace PhaseField
           return pixel >= a * n - 0.5 - outline_width / 2 &&
                  pixel <= b * n - 0.5 + outline_width / 2;
         };
-      std::vector<unsigned char> rgb(3 * n * n);
+      std::vector<unsigned char> rgb = gray_pixels(values, n);
+      for (unsigned int y = 0; y < n; ++y)
+        for (unsigned int x = 0; x < n; ++x)
+          if (((near(x, region.lower[0]) || near(x, region.upper[0])) &&
+               between(y, region.lower[1], region.upper[1])) ||
+              ((near(y, region.lower[1]) || near(y, region.upper[1])) &&
+               between(x, region.lower[0], region.upper[0])))
+            mark_pixel(rgb, y * n + x);
+      write_rgb_png(rgb, n, n, filename);
+    }
+
+
+
+    void
+    write_picture_with_zero_contour(const std::vector<double> &values,
+                                    const unsigned int         n,
+                                    const std::string         &filename)
+    {
+      AssertDimension(values.size(), n * n);
+      std::vector<unsigned char> rgb = gray_pixels(values, n);
+      // of two neighbours of opposite signs, the one nearer to zero
+      const auto crossing = [&](const unsigned int a, const unsigned int b) {
+        if (values[a] * values[b] < 0 || (values[a] == 0) != (values[b] == 0))
+          mark_pixel(rgb, std::abs(values[a]) <= std::abs(values[b]) ? a : b);
+      };
       for (unsigned int y = 0; y < n; ++y)
         for (unsigned int x = 0; x < n; ++x)
           {
-            unsigned char *pixel = &rgb[3 * (y * n + x)];
-            const bool     outline =
-              ((near(x, region.lower[0]) || near(x, region.upper[0])) &&
-               between(y, region.lower[1], region.upper[1])) ||
-              ((near(y, region.lower[1]) || near(y, region.upper[1])) &&
-               between(x, region.lower[0], region.upper[0]));
-            if (outline)
-              {
-                pixel[0] = full;
-                pixel[1] = pixel[2] = 0;
-                continue;
-              }
-            const double u = std::clamp(values[y * n + x], -1., 1.);
-            pixel[0] = pixel[1] = pixel[2] =
-              static_cast<unsigned char>(std::lround(0.5 * (u + 1) * full));
+            if (x + 1 < n)
+              crossing(y * n + x, y * n + x + 1);
+            if (y + 1 < n)
+              crossing(y * n + x, (y + 1) * n + x);
           }
       write_rgb_png(rgb, n, n, filename);
     }

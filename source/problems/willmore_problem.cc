@@ -1,4 +1,7 @@
+#include <iostream>
 #include <limits>
+#include <phasefield/core/statistics.h>
+#include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/willmore_problem.h>
 #include <phasefield/schemes/scheme_registry.h>
@@ -63,6 +66,31 @@ namespace PhaseField
     return this->discretization.error(state.block(0),
                                       exact,
                                       dealii::VectorTools::L2_norm);
+  }
+
+
+
+  template <int dim>
+  void
+  WillmoreProblem<dim>::run()
+  {
+    PhaseFieldProblem<dim>::run();
+    if constexpr (dim == 2)
+      {
+        const std::vector<double> values =
+          Images::sample_on_pixel_grid(this->discretization.get_dof_handler(),
+                                       this->solution.block(0),
+                                       picture_pixels);
+        const std::string filename =
+          this->willmore_parameters.output_directory + "/phase_field.png";
+        // on rank 0; a failed write stops every rank
+        run_on_root(this->mpi_communicator, [&]() {
+          Images::write_picture_with_zero_contour(values,
+                                                  picture_pixels,
+                                                  filename);
+          std::cout << "Picture: " << filename << std::endl;
+        });
+      }
   }
 
 

@@ -127,6 +127,19 @@ namespace PhaseField
                   const std::string         &filename);
 
     /**
+     * Write a PNG picture of phase-field values as write_picture() does
+     * (the same gray scale), with the zero level line drawn in red instead
+     * of a region: the pixels whose value has the opposite sign of a
+     * horizontal or vertical neighbour's and the smaller modulus of the
+     * two, a line one pixel wide. Uses VTK's PNG writer; call on one rank
+     * only.
+     */
+    void
+    write_picture_with_zero_contour(const std::vector<double> &values,
+                                    const unsigned int         n,
+                                    const std::string         &filename);
+
+    /**
      * Write the RGB pixels @p rgb (3 bytes per pixel, @p nx x @p ny, row
      * by row from the bottom) as the PNG file @p filename (VTK's PNG
      * writer). Call on one rank only.

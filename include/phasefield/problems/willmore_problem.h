@@ -37,6 +37,17 @@ namespace PhaseField
     /** ||U - tanh(d_exact(t)/eps)||_L2, NaN without an exact solution. */
     double
     l2_error(const BlockVector &state, const double time) const override;
+
+    /**
+     * PhaseFieldProblem::run(), then in 2D the picture phase_field.png of
+     * the final U with its zero level line in the output directory
+     * (Images::write_picture_with_zero_contour(), picture_pixels per side).
+     */
+    void
+    run();
+
+    /** Pixels per side of phase_field.png. */
+    static constexpr unsigned int picture_pixels = 512;
   };
 } // namespace PhaseField
 
