@@ -13,8 +13,8 @@ where build, parameter_files, scripts and benchmarks name the source and
 build directories (so that relative paths resolve as in the source tree
 and the output stays out of it); lines with a <placeholder> and the text
 after "  #" are left out; args are appended to each line that runs a
-program of build/ (a smaller level or fewer steps where the guide's
-command takes longer). After the block the files must exist and the
+program of build/, other than --help (a smaller level or fewer steps
+where the guide's command takes longer). After the block the files must exist and the
 pictures must pass tests/docs/check_png.py (not blank or constant).
 Exits with status 1 if a command fails or times out (120 s), a file is
 missing, a picture is blank, or no block is marked.
@@ -50,7 +50,7 @@ def commands(block, args):
         line = line.split("  #")[0].strip()
         if not line or re.search(r"<[^>]+>", line):
             continue
-        if args and program.search(line):
+        if args and program.search(line) and "--help" not in line:
             line += " " + args
         yield line
 

@@ -9,8 +9,9 @@ frequent colour (a blank or constant image, or one with a few stray
 pixels). Prints one line per file: size, distinct colours, share of the
 pixels that differ from the most frequent colour.
 
-Usage: check_png.py --write-constant <file.png>: write a constant 16 x 16
-RGB picture (the input of the test that shows that the check fails).
+Usage: check_png.py --self-test <directory>: writes a constant, a white,
+a nearly constant and a half black picture there and checks that the
+first three fail and the last passes (the check can fail).
 """
 import collections
 import struct
@@ -75,8 +76,10 @@ def pixels(path):
                            for i in range(0, stride, bpp)]
 
 
-def write_constant(path, n=16):
-    raw = b"".join(b"\x00" + b"\x80\x80\x80" * n for _ in range(n))
+def write_rgb(path, pixel, n=64):
+    """An n x n RGB picture, pixel(x, y) the 3 bytes of a pixel."""
+    raw = b"".join(b"\x00" + b"".join(pixel(x, y) for x in range(n))
+                   for y in range(n))
     def chunk(kind, body):
         return (struct.pack(">I", len(body)) + kind + body +
                 struct.pack(">I", zlib.crc32(kind + body) & 0xffffffff))
@@ -84,6 +87,25 @@ def write_constant(path, n=16):
         f.write(b"\x89PNG\r\n\x1a\n" +
                 chunk(b"IHDR", struct.pack(">IIBBBBB", n, n, 8, 2, 0, 0, 0)) +
                 chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def self_test(directory):
+    cases = {"constant": (lambda x, y: b"\x80\x80\x80", 1),
+             "white": (lambda x, y: b"\xff\xff\xff", 1),
+             "one_stray_pixel": (lambda x, y: b"\x00\x00\x00" if x == y == 3
+                                 else b"\xff\xff\xff", 1),
+             "half_black": (lambda x, y: b"\x00\x00\x00" if x < 32
+                            else b"\xff\xff\xff", 0)}
+    wrong = 0
+    for name, (pixel, expected) in cases.items():
+        path = f"{directory}/{name}.png"
+        write_rgb(path, pixel)
+        status = main([path])
+        if status != expected:
+            print(f"WRONG: status {status} for {name}.png, expected {expected}")
+            wrong = 1
+    print("the check fails for blank pictures" if not wrong else "FAIL")
+    return wrong
 
 
 def main(paths):
@@ -106,7 +128,6 @@ def main(paths):
 
 
 if __name__ == "__main__":
-    if sys.argv[1:2] == ["--write-constant"]:
-        write_constant(sys.argv[2])
-        sys.exit(0)
+    if sys.argv[1:2] == ["--self-test"]:
+        sys.exit(self_test(sys.argv[2]))
     sys.exit(main(sys.argv[1:]))
