@@ -64,7 +64,29 @@ namespace PhaseField
                                         const ConstraintParameters &constraints)
     : PhaseFieldProblem<dim>(parameters,
                              willmore_setup<dim>(parameters, constraints))
+    , constraints(constraints)
   {}
+
+
+
+  template <int dim>
+  Checkpoint::Parameters
+  WillmoreProblem<dim>::own_checkpoint_parameters() const
+  {
+    if (!constraints.any())
+      return {};
+    const auto state = [](const bool fixed) {
+      return std::string(fixed ? "fixed" : "free");
+    };
+    return {{"Constraints / Volume", state(constraints.volume)},
+            {"Constraints / Area", state(constraints.area)},
+            {"Constraints / Volume value",
+             Checkpoint::exact_value(constraints.volume_value)},
+            {"Constraints / Area value",
+             Checkpoint::exact_value(constraints.area_value)},
+            {"Constraints / Reduced volume",
+             Checkpoint::exact_value(constraints.reduced_volume)}};
+  }
 
 
 

@@ -44,6 +44,17 @@ namespace PhaseField
     /** ||U - tanh(d_exact(t)/eps)||_L2, NaN without an exact solution. */
     double
     l2_error(const BlockVector &state, const double time) const override;
+
+  protected:
+    /**
+     * The parameters of `Constraints`: a resume with other constraints is
+     * refused.
+     */
+    Checkpoint::Parameters
+    own_checkpoint_parameters() const override;
+
+  private:
+    const ConstraintParameters constraints;
   };
 } // namespace PhaseField
 
