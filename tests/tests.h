@@ -106,9 +106,9 @@ namespace Testing
     PhaseField::WillmoreFlowParameters parameters;
     parameters.parse_parameters(prm);
     if (parameters.dimension == 2)
-      PhaseField::WillmoreProblem<2>(parameters).run();
+      PhaseField::WillmoreProblem<2>(parameters, parameters.constraints).run();
     else
-      PhaseField::WillmoreProblem<3>(parameters).run();
+      PhaseField::WillmoreProblem<3>(parameters, parameters.constraints).run();
     return read_csv(directory + "/statistics.csv", header);
   }
 

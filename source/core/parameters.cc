@@ -782,6 +782,70 @@ namespace PhaseField
 
 
   void
+  ConstraintParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Constraints");
+    prm.declare_entry(
+      "Volume",
+      "free",
+      Patterns::Selection("free|fixed"),
+      "fixed: every step holds the inside measure Int (1-U)/2 (the "
+      "inside_measure column) at its value (Volume value) by a Lagrange "
+      "multiplier, the pressure (statistics column pressure). Nested "
+      "scheme only.");
+    prm.declare_entry(
+      "Area",
+      "free",
+      Patterns::Selection("free|fixed"),
+      "fixed: every step holds the area functional (3/4) a_eps[U] (the "
+      "area_energy column) at its value (Area value) by a Lagrange "
+      "multiplier, the tension (statistics column tension). Nested scheme "
+      "only.");
+    prm.declare_entry("Volume value",
+                      "0",
+                      Patterns::Double(0),
+                      "The inside measure that Volume = fixed holds; 0: "
+                      "that of the initial phase field.");
+    prm.declare_entry("Area value",
+                      "0",
+                      Patterns::Double(0),
+                      "The area functional that Area = fixed holds; 0: "
+                      "that of the initial phase field.");
+    prm.declare_entry(
+      "Reduced volume",
+      "0",
+      Patterns::Double(0, 1),
+      "With Volume = Area = fixed: hold the inside measure V at the value of "
+      "this reduced volume for the area A that Area = fixed holds: 3D "
+      "v = 6 sqrt(pi) V / A^(3/2), 2D nu = 4 pi V / A^2 (1 for the "
+      "sphere and the circle). 0: Volume value decides.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ConstraintParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Constraints");
+    volume         = prm.get("Volume") == "fixed";
+    area           = prm.get("Area") == "fixed";
+    volume_value   = prm.get_double("Volume value");
+    area_value     = prm.get_double("Area value");
+    reduced_volume = prm.get_double("Reduced volume");
+    prm.leave_subsection();
+    if (reduced_volume != 0 && !(volume && area))
+      throw InputError(
+        "Constraints / Reduced volume = " + std::to_string(reduced_volume) +
+        " needs Volume = fixed and Area = fixed.");
+    if (reduced_volume != 0 && volume_value != 0)
+      throw InputError("Constraints / Reduced volume and Volume value both "
+                       "set the volume: set one of them to 0.");
+  }
+
+
+
+  void
   CheckpointParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Checkpoint");

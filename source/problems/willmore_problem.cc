@@ -4,6 +4,7 @@
 #include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/willmore_problem.h>
+#include <phasefield/schemes/constraints.h>
 #include <phasefield/schemes/scheme_registry.h>
 
 namespace PhaseField
@@ -12,6 +13,7 @@ namespace PhaseField
   WillmoreFlowParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
     WillmoreParameters::declare_parameters(prm);
+    ConstraintParameters::declare_parameters(prm);
     declare_scheme_parameters(prm);
   }
 
@@ -21,7 +23,19 @@ namespace PhaseField
   WillmoreFlowParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
     WillmoreParameters::parse_parameters(prm);
-    model.scheme = parse_scheme_parameters(prm);
+    constraints.parse_parameters(prm);
+    ModelTerms needed;
+    if (constraints.any())
+      {
+        needed.with(ScalarConstraints::name());
+        if (model.coarse_start_level != 0)
+          throw InputError(
+            "Constraints / Volume and Area = fixed hold the values of the "
+            "phase field on Finest level; they cannot be combined with "
+            "Time stepping / Coarse start level = " +
+            std::to_string(model.coarse_start_level) + " (set it to 0).");
+      }
+    model.scheme = parse_scheme_parameters(prm, needed, "willmore_flow");
   }
 
 
@@ -31,12 +45,17 @@ namespace PhaseField
     /** Willmore flow of the `Geometry` shape. */
     template <int dim>
     typename PhaseFieldProblem<dim>::Setup
-    willmore_setup(const WillmoreParameters &parameters)
+    willmore_setup(const WillmoreParameters   &parameters,
+                   const ConstraintParameters &constraints)
     {
       typename PhaseFieldProblem<dim>::Setup setup;
       setup.program_name = "willmore_flow";
       setup.signed_distance =
         Shapes::create_signed_distance<dim>(parameters.geometry);
+      if (constraints.any())
+        setup.outer_energy.registered_terms[ScalarConstraints::name()] =
+          std::make_shared<ScalarConstraints>(constraints,
+                                              parameters.model.epsilon);
       return setup;
     }
   } // namespace
@@ -44,9 +63,33 @@ namespace PhaseField
 
 
   template <int dim>
-  WillmoreProblem<dim>::WillmoreProblem(const WillmoreParameters &parameters)
-    : PhaseFieldProblem<dim>(parameters, willmore_setup<dim>(parameters))
+  WillmoreProblem<dim>::WillmoreProblem(const WillmoreParameters   &parameters,
+                                        const ConstraintParameters &constraints)
+    : PhaseFieldProblem<dim>(parameters,
+                             willmore_setup<dim>(parameters, constraints))
+    , constraints(constraints)
   {}
+
+
+
+  template <int dim>
+  Checkpoint::Parameters
+  WillmoreProblem<dim>::own_checkpoint_parameters() const
+  {
+    if (!constraints.any())
+      return {};
+    const auto state = [](const bool fixed) {
+      return std::string(fixed ? "fixed" : "free");
+    };
+    return {{"Constraints / Volume", state(constraints.volume)},
+            {"Constraints / Area", state(constraints.area)},
+            {"Constraints / Volume value",
+             Checkpoint::exact_value(constraints.volume_value)},
+            {"Constraints / Area value",
+             Checkpoint::exact_value(constraints.area_value)},
+            {"Constraints / Reduced volume",
+             Checkpoint::exact_value(constraints.reduced_volume)}};
+  }
 
 
 

@@ -24,8 +24,8 @@ main(int argc, char **argv)
       WillmoreFlowParameters parameters;
       parameters.parse_parameters(prm);
       if (parameters.dimension == 2)
-        WillmoreProblem<2>(parameters).run();
+        WillmoreProblem<2>(parameters, parameters.constraints).run();
       else
-        WillmoreProblem<3>(parameters).run();
+        WillmoreProblem<3>(parameters, parameters.constraints).run();
     });
 }

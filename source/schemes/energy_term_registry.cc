@@ -1,4 +1,5 @@
 #include <phasefield/core/parameters.h>
+#include <phasefield/schemes/constraints.h>
 #include <phasefield/schemes/energy_term_registry.h>
 
 namespace PhaseField
@@ -90,7 +91,9 @@ namespace PhaseField
      * itself) and the data term (OuterEnergy::data_term, shape from
      * contour's mismatch: the step takes its Gauss-Newton model through
      * make_data_term() and judges the step by the term itself, which
-     * needs a path of its own).
+     * needs a path of its own). Last the volume and area constraints
+     * (constraints.h), an energy term whose multipliers the nested scheme
+     * solves for (ConstrainedNestedStep).
      */
     std::vector<ModelTermEntry>
     built_in_terms()
@@ -106,9 +109,11 @@ namespace PhaseField
                              [](const OuterEnergy &outer) {
                                return outer.willmore_weight != 1;
                              }),
-              property_entry("mismatch term", [](const OuterEnergy &outer) {
-                return outer.data_term != nullptr;
-              })};
+              property_entry("mismatch term",
+                             [](const OuterEnergy &outer) {
+                               return outer.data_term != nullptr;
+                             }),
+              constraints_entry()};
     }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <optional>
 #include <phasefield/mesh/operator_backend.h>
+#include <phasefield/schemes/nested/constrained_nested_step.h>
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/solvers/descent_solver.h>
 #include <phasefield/solvers/newton_solver.h>
@@ -33,6 +34,7 @@ namespace PhaseField
           full_system_refactorization_threshold :
           0))
     , mesh_matrices(std::make_unique<NestedMatrices<dim>>())
+    , constraints(ScalarConstraints::of(settings.outer_energy))
   {
     linear_solver->set_constant_matrix(linear_model());
     // every step passes mesh_matrices, refilled in place; reset_solver()
@@ -104,6 +106,9 @@ namespace PhaseField
   NestedScheme<dim>::initialize(BlockVector &state, const double tau)
   {
     model.initialize(state, tau, linear_solver->type());
+    if (constraints)
+      constraints->set_missing_targets(discretization.get_operators(),
+                                       state.block(Field::U));
     first_step_from_initial_data = true;
   }
 
@@ -207,6 +212,9 @@ namespace PhaseField
     if (linear_model())
       return newton_solve(
         step, state, control, *linear_solver, pcout, settings.verbose);
+    if (constraints)
+      return constrained_solve(
+        step, old_state.block(Field::U), state, tau, control);
     // With U fixed outside a region (edge restoration), and in the first
     // step after initialize() with restoration terms, the descent method
     // directly. Otherwise Newton's method with residual damping first: it
@@ -241,6 +249,37 @@ namespace PhaseField
     NewtonControl descent_control(control);
     descent_control.max_iterations = settings.newton.max_descent_iterations;
     return combine(newton, descent_solve(step, state, descent_control));
+  }
+
+
+
+  template <int dim>
+  StepReport
+  NestedScheme<dim>::constrained_solve(NestedStep<dim>     &step,
+                                       const Vector        &old_u,
+                                       BlockVector         &state,
+                                       const double         tau,
+                                       const NewtonControl &control)
+  {
+    constraints->set_missing_targets(discretization.get_operators(), old_u);
+    ConstrainedNestedStep<dim> system(step, *constraints, discretization);
+    std::vector<double>        lambda(constraints->size());
+    for (unsigned int j = 0; j < lambda.size(); ++j)
+      lambda[j] =
+        constraints->to_residual_units(tau) * constraints->multiplier(j);
+    BlockVector      z = system.extended_state(state, lambda);
+    const StepReport report =
+      newton_solve(system, z, control, *linear_solver, pcout, settings.verbose);
+    ConstrainedNestedStep<dim>::copy_nested_state(z, state);
+    if (report.converged)
+      {
+        lambda = system.multipliers(z);
+        for (unsigned int j = 0; j < lambda.size(); ++j)
+          constraints->set_multiplier(j,
+                                      lambda[j] /
+                                        constraints->to_residual_units(tau));
+      }
+    return report;
   }
 
 

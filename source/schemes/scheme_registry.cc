@@ -1,5 +1,6 @@
 #include <phasefield/schemes/augmented_lagrangian_parameters.h>
 #include <phasefield/schemes/augmented_lagrangian_scheme.h>
+#include <phasefield/schemes/constraints.h>
 #include <phasefield/schemes/energy_term_registry.h>
 #include <phasefield/schemes/nested_scheme.h>
 #include <phasefield/schemes/scheme_registry.h>
@@ -55,7 +56,9 @@ namespace PhaseField
         "the nested step as the minimisation of an augmented Lagrangian in "
         "(U,V) by a trust-region method (thesis chapter 7; subsection "
         "Augmented Lagrangian).";
-      entry.terms       = ModelTerms::all().without("mismatch term");
+      entry.terms = ModelTerms::all()
+                      .without("mismatch term")
+                      .without(ScalarConstraints::name());
       entry.matrix_free = true;
       entry.set_factory<AugmentedLagrangianScheme>();
       entry.set_parameters<AugmentedLagrangianParameters>();

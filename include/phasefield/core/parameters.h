@@ -461,6 +461,41 @@ namespace PhaseField
   };
 
   /**
+   * Subsection `Constraints` (willmore_flow): the inside measure
+   * Int (1-U)/2 (`Volume`) and the area functional (3/4) a_eps[U]
+   * (`Area`, the `area_energy` column) held fixed in every step by
+   * Lagrange multipliers (ScalarConstraints, schemes/constraints.h).
+   */
+  struct ConstraintParameters
+  {
+    /** Hold the inside measure fixed? */
+    bool volume = false;
+    /** Hold the area functional fixed? */
+    bool area = false;
+    /** The value to hold the inside measure at; 0: the initial one. */
+    double volume_value = 0;
+    /** The value to hold the area functional at; 0: the initial one. */
+    double area_value = 0;
+    /**
+     * With both fixed: hold the inside measure at the value that gives this
+     * reduced volume with the area's target; 0: Volume value decides.
+     */
+    double reduced_volume = 0;
+
+    /** Is any constraint fixed? */
+    bool
+    any() const
+    {
+      return volume || area;
+    }
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
    * Subsection `Checkpoint`: checkpoint and resume of the time-dependent
    * programs (willmore_flow, edge_restoration; see TimeLoop).
    */

@@ -14,6 +14,9 @@ namespace PhaseField
    */
   struct WillmoreFlowParameters : public WillmoreParameters
   {
+    /** Subsection `Constraints`: fixed volume and area (vesicles). */
+    ConstraintParameters constraints;
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
@@ -26,13 +29,17 @@ namespace PhaseField
    * with the scheme of `Time stepping / Scheme`. What it adds to
    * PhaseFieldProblem is the exact evolution where one is known (circles
    * grow as r(t) = (2t + r0^4)^(1/4), spheres are stationary) for the
-   * `l2_error` column.
+   * `l2_error` column, and the volume and area constraints of `Constraints`
+   * (ScalarConstraints, which the nested scheme holds by Lagrange
+   * multipliers).
    */
   template <int dim>
   class WillmoreProblem : public PhaseFieldProblem<dim>
   {
   public:
-    explicit WillmoreProblem(const WillmoreParameters &parameters);
+    /** The flow of @p parameters with the constraints @p constraints. */
+    explicit WillmoreProblem(const WillmoreParameters   &parameters,
+                             const ConstraintParameters &constraints = {});
 
     /** ||U - tanh(d_exact(t)/eps)||_L2, NaN without an exact solution. */
     double
@@ -44,10 +51,21 @@ namespace PhaseField
      * (Images::write_picture_with_zero_contour(), picture_pixels per side).
      */
     void
-    run();
+    run() override;
 
     /** Pixels per side of phase_field.png. */
     static constexpr unsigned int picture_pixels = 512;
+
+  protected:
+    /**
+     * The parameters of `Constraints`: a resume with other constraints is
+     * refused.
+     */
+    Checkpoint::Parameters
+    own_checkpoint_parameters() const override;
+
+  private:
+    const ConstraintParameters constraints;
   };
 } // namespace PhaseField
 

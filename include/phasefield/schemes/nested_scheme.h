@@ -6,6 +6,7 @@
 #include <phasefield/core/linear_algebra.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/mesh/discretization.h>
+#include <phasefield/schemes/constraints.h>
 #include <phasefield/schemes/nested/nested_linear_systems.h>
 #include <phasefield/schemes/nested/nested_model.h>
 #include <phasefield/schemes/nested/nested_physics.h>
@@ -180,6 +181,20 @@ namespace PhaseField
                   const NewtonControl &control);
 
     /**
+     * newton_solve() of the bordered system of @p step with the volume and
+     * area constraints (ConstrainedNestedStep) from @p state, the
+     * multipliers starting from those of the last converged step; the
+     * targets are set from @p old_u where the parameters left them open.
+     * No descent fallback: a failed step is halved.
+     */
+    StepReport
+    constrained_solve(NestedStep<dim>     &step,
+                      const Vector        &old_u,
+                      BlockVector         &state,
+                      const double         tau,
+                      const NewtonControl &control);
+
+    /**
      * Is every step after the first taken by the descent method (U fixed
      * outside a region: edge restoration)? See attempt_step().
      */
@@ -204,6 +219,8 @@ namespace PhaseField
      * the 3-field Jacobian with restoration terms.
      */
     std::unique_ptr<NestedMatrices<dim>> mesh_matrices;
+    /** The volume and area constraints, nullptr without. */
+    const std::shared_ptr<ScalarConstraints> constraints;
     /**
      * The next step is the first after initialize(), whose state (the
      * sampled initial shape, or a level transition of the contour problem
