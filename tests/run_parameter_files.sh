@@ -1,7 +1,7 @@
 #!/bin/sh
 # Usage: run_parameter_files.sh <source directory> <build directory>
 # Runs every shipped parameter file parameter_files/<program>/*.prm through
-# build/<program> with --set options that make it small (level 5, two
+# build/<program> (parameter_files/vesicles/ through build/willmore_flow) with --set options that make it small (level 5, two
 # steps without an end time, epsilon = 4h; biharmonic_flow: levels 3 and 4; shape_from_contour:
 # level 5, one step; scripts/plot_shape.py on the silhouette file's
 # output), then the demo (willmore_flow
@@ -43,6 +43,11 @@ for prm in parameter_files/*/*.prm; do
       # shows that the file runs
       run "$build_dir/$program" "$prm" --set "Mesh/Finest level=5" \
         --set "Time stepping/Number of steps=1" \
+        --set "Phase field/Epsilon=4*h" \
+        --set "Output directory=$output/run" ;;
+    vesicles/*)
+      run "$build_dir/willmore_flow" "$prm" --set "Mesh/Finest level=5" \
+        --set "Time stepping/Number of steps=2" \
         --set "Phase field/Epsilon=4*h" \
         --set "Output directory=$output/run" ;;
     *)
