@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <functional>
+#include <phasefield/core/message_text.h>
 #include <phasefield/core/parser_messages.h>
 #include <phasefield/geometry/shapes.h>
 #include <sstream>
@@ -27,9 +28,13 @@ namespace PhaseField
               p[d] = default_value;
             return p;
           }
-        if (values.size() < dim)
-          throw InputError("The parameter <" + parameter_name + "> needs " +
-                           std::to_string(dim) + " comma separated entries.");
+        if (values.size() != dim)
+          throw InputError("The parameter <" + parameter_name + "> has " +
+                           std::to_string(values.size()) + " entries, but " +
+                           "needs " + std::to_string(dim) +
+                           " comma separated entries (one per coordinate "
+                           "of <Dimension> = " +
+                           std::to_string(dim) + ").");
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = values[d];
         return p;
@@ -157,7 +162,7 @@ namespace PhaseField
                 std::ostringstream where;
                 where << p;
                 throw InputError("The parameter <Geometry / Expression> = <" +
-                                 expression + "> is not finite at (" +
+                                 abbreviated(expression) + "> is not finite at (" +
                                  where.str() +
                                  "): it must be a finite "
                                  "signed distance everywhere in [0,1]^" +
@@ -187,9 +192,9 @@ namespace PhaseField
         catch (const ExceptionBase &exc)
           {
             throw InputError("The parameter <Geometry / Expression> = <" +
-                             expression + "> is not a valid expression in " +
+                             abbreviated(expression) + "> is not a valid expression in " +
                              FunctionParser<dim>::default_variable_names() +
-                             ": " + parser_message(parser_output.text(), exc) +
+                             ": " + abbreviated(parser_message(parser_output.text(), exc)) +
                              ".");
           }
         check_finite_on_grid(*parser, expression);

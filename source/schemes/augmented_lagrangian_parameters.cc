@@ -32,7 +32,7 @@ namespace PhaseField
                       Patterns::Double(0),
                       "lambda0: the penalty of the first step; each later "
                       "step starts from max(lambda_final / <Penalty "
-                      "reduction per step>, lambda0).");
+                      "reduction per step>, lambda0). At most 1e16.");
     prm.declare_entry(
       "Penalty reduction per step",
       text(defaults.penalty_reduction),
@@ -79,6 +79,20 @@ namespace PhaseField
 
 
 
+  namespace
+  {
+    /** @p value as a message shows it. */
+    std::string
+    number_text(const double value)
+    {
+      std::ostringstream text;
+      text << value;
+      return text.str();
+    }
+  } // namespace
+
+
+
   void
   AugmentedLagrangianParameters::parse_parameters(ParameterHandler &prm)
   {
@@ -101,6 +115,17 @@ namespace PhaseField
     if (!(initial_penalty > 0))
       throw InputError(
         "<Augmented Lagrangian / Initial penalty> must be positive.");
+    // lambda |C|^2 / 2 against the objective: beyond 1 / round-off the
+    // objective drowns in the round-off of the penalty term (and at 1e300
+    // the matrices overflow)
+    constexpr double largest_initial_penalty = 1e16;
+    if (initial_penalty > largest_initial_penalty)
+      throw InputError(
+        "<Augmented Lagrangian / Initial penalty> = " +
+        number_text(initial_penalty) +
+        " is above 1e16: the objective would drown in the round-off of the "
+        "penalty term, and the matrices of the steps overflow. The penalty "
+        "grows by itself where the constraint needs it; start from e.g. 10.");
     // measured: on 2 ranks ROL's trust region does not reach the gradient
     // tolerance of tests/rol_trust_region.cc (not investigated)
     if (rol_trust_region &&
