@@ -17,6 +17,20 @@ namespace PhaseField
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** @p value with 6 significant digits (1e+30, not 31 digits). */
+    std::string
+    number_text(const double value)
+    {
+      std::ostringstream text;
+      text << value;
+      return text.str();
+    }
+  } // namespace
+
+
+
   double
   evaluate_expression_in_h(const std::string &expression,
                            const double       h,
@@ -461,7 +475,7 @@ namespace PhaseField
     if (tau > largest_tau)
       throw InputError("The parameter <Time stepping / Tau> = <" +
                        abbreviated(tau_expression) + "> evaluates to " +
-                       std::to_string(tau) +
+                       number_text(tau) +
                        ", but must be at most 1: in a time of 1 Willmore "
                        "flow changes every shape in the unit cell beyond "
                        "recognition (a circle of radius r0 grows to (2 t + "
