@@ -62,6 +62,17 @@ namespace PhaseField
                       Patterns::Integer(1),
                       "Trust-region iterations per minimisation of l_A "
                       "before the step is halved.");
+    prm.declare_entry(
+      "Maximum trust-region iterations per step",
+      text(defaults.max_step_trust_region_iterations),
+      Patterns::Integer(1),
+      "Trust-region iterations of one attempt of a time step, summed over "
+      "its outer iterations, before the step is halved: each attempt takes "
+      "at most this many trust-region iterations of at most <Maximum CG "
+      "iterations> CG iterations each, a step at most <Newton / Maximum "
+      "step halvings> + 1 attempts, so that every step ends (a step that "
+      "the augmented Lagrangian cannot take, e.g. on a mesh far too "
+      "coarse for epsilon, fails instead of running for hours).");
     prm.declare_entry("Maximum CG iterations",
                       text(defaults.max_cg_iterations),
                       Patterns::Integer(1),
@@ -106,6 +117,8 @@ namespace PhaseField
     max_outer_iterations = prm.get_integer("Maximum outer iterations");
     max_trust_region_iterations =
       prm.get_integer("Maximum trust-region iterations");
+    max_step_trust_region_iterations =
+      prm.get_integer("Maximum trust-region iterations per step");
     max_cg_iterations = prm.get_integer("Maximum CG iterations");
     rol_trust_region  = prm.get("Trust-region solver") == "rol";
     prm.leave_subsection();

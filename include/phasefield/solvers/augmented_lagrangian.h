@@ -91,6 +91,12 @@ namespace PhaseField
     /** lambda at the start. */
     double       initial_penalty      = 10;
     unsigned int max_outer_iterations = 30;
+    /**
+     * Limit of the trust-region iterations summed over the outer
+     * iterations: each inner minimisation may use what is left of it (at
+     * most trust_region.max_iterations).
+     */
+    unsigned int max_total_trust_region_iterations = 1000;
     /** The inner solver (its gradient tolerance is set per iteration). */
     TrustRegionControl trust_region;
     /**
@@ -126,7 +132,8 @@ namespace PhaseField
    * w <- w / lambda. Otherwise lambda <- AugmentedLagrangian::penalty_growth
    * lambda, eta <- lambda^-eta_exponent, w <- 1/lambda. @p x and @p p are
    * updated in place (warm start and result). Not converged: the trust
-   * region failed or max_outer_iterations were used.
+   * region failed, or max_outer_iterations or
+   * max_total_trust_region_iterations were used.
    */
   AugmentedLagrangianReport
   augmented_lagrangian_minimize(ConstrainedMinimizationProblem   &problem,
