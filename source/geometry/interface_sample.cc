@@ -52,7 +52,9 @@ namespace PhaseField
       sample.half_diagonal = 0.5 * std::sqrt(double(dim)) * sample.spacing;
       sample.smallest      = std::numeric_limits<double>::infinity();
       sample.largest       = -sample.smallest;
-      const unsigned int n_points = std::pow(n, dim);
+      unsigned int n_points = 1;
+      for (int d = 0; d < dim; ++d)
+        n_points *= n;
       sample.sorted_distances.reserve(n_points);
       for (unsigned int i = 0; i < n_points; ++i)
         {
