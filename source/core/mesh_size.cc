@@ -34,12 +34,12 @@ namespace PhaseField
       double
       node_memory()
       {
-        const double physical = double(sysconf(_SC_PHYS_PAGES)) *
-                                double(sysconf(_SC_PAGESIZE));
-        return std::min({physical > 0 ? physical : unlimited,
-                         limit_in_file("/sys/fs/cgroup/memory.max"),
-                         limit_in_file(
-                           "/sys/fs/cgroup/memory/memory.limit_in_bytes")});
+        const double physical =
+          double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+        return std::min(
+          {physical > 0 ? physical : unlimited,
+           limit_in_file("/sys/fs/cgroup/memory.max"),
+           limit_in_file("/sys/fs/cgroup/memory/memory.limit_in_bytes")});
       }
 
       /** The address space that `ulimit -v` leaves this process. */
@@ -47,12 +47,14 @@ namespace PhaseField
       address_space_left()
       {
         rlimit limit{};
-        if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+        if (getrlimit(RLIMIT_AS, &limit) != 0 ||
+            limit.rlim_cur == RLIM_INFINITY)
           return unlimited;
         dealii::Utilities::System::MemoryStats memory;
         dealii::Utilities::System::get_memory_stats(memory);
         constexpr double bytes_per_kib = 1024.;
-        return std::max(0., double(limit.rlim_cur) - memory.VmSize * bytes_per_kib);
+        return std::max(0.,
+                        double(limit.rlim_cur) - memory.VmSize * bytes_per_kib);
       }
 
       /** The number of ranks of @p mpi_communicator on this node. */
@@ -117,9 +119,8 @@ namespace PhaseField
                      " GB per rank (its memory, or the limit of `ulimit -v`, "
                      "shared by the ranks on a node)";
       throw InputError(
-        what + " " +
-        std::to_string(static_cast<unsigned long long>(n_cells)) + " cells (" +
-        std::to_string(static_cast<unsigned long long>(per_rank)) +
+        what + " " + std::to_string(static_cast<unsigned long long>(n_cells)) +
+        " cells (" + std::to_string(static_cast<unsigned long long>(per_rank)) +
         " per rank on " + std::to_string(n_ranks) + " rank(s), about " +
         gigabytes(bytes) + " GB per rank at 1 KB per cell); " + limit + ". " +
         remedy);

@@ -108,7 +108,7 @@ namespace PhaseField
     check_include_cycles(filename, chain);
     // a UTF-8 byte order mark (editors on Windows write one) is not part
     // of the first line
-    std::string text{std::istreambuf_iterator<char>(file),
+    std::string       text{std::istreambuf_iterator<char>(file),
                      std::istreambuf_iterator<char>()};
     const std::string byte_order_mark = "\xEF\xBB\xBF";
     if (text.compare(0, byte_order_mark.size(), byte_order_mark) == 0)

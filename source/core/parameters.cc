@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <phasefield/core/mesh_size.h>
-#include <phasefield/core/parameters.h>
 #include <phasefield/core/message_text.h>
+#include <phasefield/core/parameters.h>
 #include <phasefield/core/parser_messages.h>
 #include <sstream>
 
@@ -46,10 +46,11 @@ namespace PhaseField
       }
     catch (const ExceptionBase &exc)
       {
-        throw InputError("The parameter <" + parameter_name +
-                         "> has the value <" + abbreviated(expression) +
-                         ">, which is not a valid expression in h: " +
-                         abbreviated(parser_message(parser_output.text(), exc)) + ".");
+        throw InputError(
+          "The parameter <" + parameter_name + "> has the value <" +
+          abbreviated(expression) +
+          ">, which is not a valid expression in h: " +
+          abbreviated(parser_message(parser_output.text(), exc)) + ".");
       }
     if (!std::isfinite(value))
       throw InputError(
@@ -459,9 +460,9 @@ namespace PhaseField
                                    const std::string &name,
                                    const std::string &expression) {
       if (!(value > 0))
-        throw InputError("The parameter <" + name + "> = <" + abbreviated(expression) +
-                         "> evaluates to " + std::to_string(value) +
-                         ", but must be positive.");
+        throw InputError("The parameter <" + name + "> = <" +
+                         abbreviated(expression) + "> evaluates to " +
+                         std::to_string(value) + ", but must be positive.");
     };
     check_positive(epsilon, "Phase field / Epsilon", epsilon_expression);
     check_positive(tau, "Time stepping / Tau", tau_expression);
@@ -488,8 +489,8 @@ namespace PhaseField
       throw InputError("The parameter <Phase field / Epsilon> = <" +
                        abbreviated(epsilon_expression) + "> evaluates to " +
                        std::to_string(epsilon) + " (" +
-                       std::to_string(epsilon / h) + " h at h = " +
-                       std::to_string(h) +
+                       std::to_string(epsilon / h) +
+                       " h at h = " + std::to_string(h) +
                        "), but must be at least h/2: the mesh cannot "
                        "resolve a thinner interface. Use e.g. 4*h.");
     // V - U is of the size inner tau / h^2: below this bound it is within
@@ -597,8 +598,8 @@ namespace PhaseField
         evaluate_expression_in_h(expression, h, "Time stepping / " + name);
       if (value < 0)
         throw InputError(
-          "The parameter <Time stepping / " + name + "> = <" + abbreviated(expression) +
-          "> evaluates to " + std::to_string(value) +
+          "The parameter <Time stepping / " + name + "> = <" +
+          abbreviated(expression) + "> evaluates to " + std::to_string(value) +
           ", but must be positive (or 0: " +
           (name == "End time" ? "no end time" : "no limit") + ").");
       return value;
@@ -609,11 +610,12 @@ namespace PhaseField
       evaluate_non_negative(largest_step_expression, "Largest step");
     end_time = evaluate_non_negative(end_time_expression, "End time");
     if (largest_step > 0 && smallest_step > largest_step)
-      throw InputError(
-        "<Time stepping / Smallest step> = <" + abbreviated(smallest_step_expression) +
-        "> = " + std::to_string(smallest_step) +
-        " is larger than <Time stepping / Largest step> = <" +
-        abbreviated(largest_step_expression) + "> = " + std::to_string(largest_step) + ".");
+      throw InputError("<Time stepping / Smallest step> = <" +
+                       abbreviated(smallest_step_expression) +
+                       "> = " + std::to_string(smallest_step) +
+                       " is larger than <Time stepping / Largest step> = <" +
+                       abbreviated(largest_step_expression) +
+                       "> = " + std::to_string(largest_step) + ".");
     if (control == StepControl::adaptive &&
         (tau < smallest_step || (largest_step > 0 && tau > largest_step)))
       throw InputError(

@@ -28,9 +28,8 @@ namespace PhaseField
     InterfaceSample::band_volume(const double half_width) const
     {
       const auto share = [this](const double w) {
-        const auto in_band = std::lower_bound(sorted_distances.begin(),
-                                              sorted_distances.end(),
-                                              w);
+        const auto in_band =
+          std::lower_bound(sorted_distances.begin(), sorted_distances.end(), w);
         return double(in_band - sorted_distances.begin()) /
                sorted_distances.size();
       };
@@ -48,10 +47,10 @@ namespace PhaseField
     {
       const unsigned int n = points_per_direction(dim);
       InterfaceSample    sample;
-      sample.spacing       = 1. / n;
-      sample.half_diagonal = 0.5 * std::sqrt(double(dim)) * sample.spacing;
-      sample.smallest      = std::numeric_limits<double>::infinity();
-      sample.largest       = -sample.smallest;
+      sample.spacing        = 1. / n;
+      sample.half_diagonal  = 0.5 * std::sqrt(double(dim)) * sample.spacing;
+      sample.smallest       = std::numeric_limits<double>::infinity();
+      sample.largest        = -sample.smallest;
       unsigned int n_points = 1;
       for (int d = 0; d < dim; ++d)
         n_points *= n;
@@ -67,8 +66,7 @@ namespace PhaseField
           sample.largest     = std::max(sample.largest, value);
           sample.sorted_distances.push_back(std::abs(value));
         }
-      std::sort(sample.sorted_distances.begin(),
-                sample.sorted_distances.end());
+      std::sort(sample.sorted_distances.begin(), sample.sorted_distances.end());
       return sample;
     }
 

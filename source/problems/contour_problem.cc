@@ -365,17 +365,17 @@ namespace PhaseField
   ContourProblem<dim>::start_level(const unsigned int index)
   {
     TimerOutput::Scope t(this->computing_timer, "labeling: target");
-    level_index              = index;
-    this->level_parameters   = parameters.for_level(index);
-    const unsigned int level = this->level_parameters.mesh.finest_level;
+    level_index               = index;
+    this->level_parameters    = parameters.for_level(index);
+    const unsigned int  level = this->level_parameters.mesh.finest_level;
     std::vector<double> target =
       target_on(HuffmanLabeling::LabelingGrid<dim>(level));
     check_target_not_empty(target, parameters.target, level);
-    mismatch_term = std::make_unique<MismatchTerm<dim>>(
-      this->discretization,
-      level,
-      std::move(target),
-      parameters.model.mismatch_weight);
+    mismatch_term =
+      std::make_unique<MismatchTerm<dim>>(this->discretization,
+                                          level,
+                                          std::move(target),
+                                          parameters.model.mismatch_weight);
     criterion_history.clear();
     tau_factor = 1;
     this->pcout << "level " << this->level_parameters.mesh.finest_level

@@ -41,13 +41,13 @@ namespace PhaseField
       if (sample.smallest > sample.half_diagonal)
         throw InputError(shape_name(geometry) + " lies entirely outside " +
                          domain + " (its signed distance is at least " +
-                         short_number(sample.smallest) +
-                         " everywhere in it)" + remedy);
+                         short_number(sample.smallest) + " everywhere in it)" +
+                         remedy);
       if (sample.largest < -sample.half_diagonal)
         throw InputError(shape_name(geometry) + " contains all of " + domain +
                          " (its signed distance is at most " +
-                         short_number(sample.largest) +
-                         " everywhere in it)" + remedy);
+                         short_number(sample.largest) + " everywhere in it)" +
+                         remedy);
     }
 
     /** Refuse an epsilon beyond the largest distance to the interface. */
@@ -62,8 +62,8 @@ namespace PhaseField
         return;
       throw InputError(
         "<Phase field / Epsilon> = <" +
-          abbreviated(parameters.model.epsilon_expression) +
-        "> evaluates to " + short_number(epsilon) +
+        abbreviated(parameters.model.epsilon_expression) + "> evaluates to " +
+        short_number(epsilon) +
         ", but no point of the domain is farther than " +
         short_number(farthest) + " from the interface of " +
         shape_name(parameters.geometry) +

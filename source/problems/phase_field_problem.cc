@@ -266,8 +266,8 @@ namespace PhaseField
           << " MPI rank(s), " << scheme->linear_solver_description()
           << " linear solver" << std::endl;
     std::vector<std::string> warnings = scheme->warnings();
-    const std::string        epsilon = epsilon_resolution_warning(
-      willmore_parameters.for_finest_level(
+    const std::string        epsilon =
+      epsilon_resolution_warning(willmore_parameters.for_finest_level(
         discretization.get_settings().mesh.finest_level));
     if (!epsilon.empty())
       warnings.push_back(epsilon);

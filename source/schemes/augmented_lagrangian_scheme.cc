@@ -441,11 +441,11 @@ namespace PhaseField
   AugmentedLagrangianScheme<dim>::control() const
   {
     AugmentedLagrangianControl c;
-    c.gradient_tolerance             = parameters.gradient_tolerance;
-    c.constraint_tolerance           = parameters.constraint_tolerance;
-    c.initial_penalty                = next_penalty;
-    c.max_outer_iterations           = parameters.max_outer_iterations;
-    c.trust_region.max_iterations    = parameters.max_trust_region_iterations;
+    c.gradient_tolerance          = parameters.gradient_tolerance;
+    c.constraint_tolerance        = parameters.constraint_tolerance;
+    c.initial_penalty             = next_penalty;
+    c.max_outer_iterations        = parameters.max_outer_iterations;
+    c.trust_region.max_iterations = parameters.max_trust_region_iterations;
     c.max_total_trust_region_iterations =
       parameters.max_step_trust_region_iterations;
     c.trust_region.max_cg_iterations = parameters.max_cg_iterations;
