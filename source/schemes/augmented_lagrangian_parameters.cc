@@ -67,12 +67,20 @@ namespace PhaseField
       text(defaults.max_step_trust_region_iterations),
       Patterns::Integer(1),
       "Trust-region iterations of one attempt of a time step, summed over "
-      "its outer iterations, before the step is halved: each attempt takes "
-      "at most this many trust-region iterations of at most <Maximum CG "
-      "iterations> CG iterations each, a step at most <Newton / Maximum "
-      "step halvings> + 1 attempts, so that every step ends (a step that "
-      "the augmented Lagrangian cannot take, e.g. on a mesh far too "
-      "coarse for epsilon, fails instead of running for hours).");
+      "its outer iterations, before the step is halved. With <Maximum CG "
+      "iterations per step> it bounds the work of an attempt, and a step "
+      "has at most <Newton / Maximum step halvings> + 1 attempts, so that "
+      "every step ends (a step that the augmented Lagrangian cannot take, "
+      "e.g. on a mesh far too coarse for epsilon, fails instead of "
+      "running for hours).");
+    prm.declare_entry(
+      "Maximum CG iterations per step",
+      text(defaults.max_step_cg_iterations),
+      Patterns::Integer(1),
+      "Truncated-CG iterations of one attempt of a time step, summed over "
+      "its trust-region and outer iterations, before the step is halved "
+      "(own trust region only; see Maximum trust-region iterations per "
+      "step).");
     prm.declare_entry("Maximum CG iterations",
                       text(defaults.max_cg_iterations),
                       Patterns::Integer(1),
@@ -119,8 +127,9 @@ namespace PhaseField
       prm.get_integer("Maximum trust-region iterations");
     max_step_trust_region_iterations =
       prm.get_integer("Maximum trust-region iterations per step");
-    max_cg_iterations = prm.get_integer("Maximum CG iterations");
-    rol_trust_region  = prm.get("Trust-region solver") == "rol";
+    max_step_cg_iterations = prm.get_integer("Maximum CG iterations per step");
+    max_cg_iterations      = prm.get_integer("Maximum CG iterations");
+    rol_trust_region       = prm.get("Trust-region solver") == "rol";
     prm.leave_subsection();
     if (!(gradient_tolerance > 0) || !(constraint_tolerance > 0))
       throw InputError("<Augmented Lagrangian / Gradient tolerance> and "

@@ -448,6 +448,7 @@ namespace PhaseField
     c.trust_region.max_iterations = parameters.max_trust_region_iterations;
     c.max_total_trust_region_iterations =
       parameters.max_step_trust_region_iterations;
+    c.max_total_cg_iterations        = parameters.max_step_cg_iterations;
     c.trust_region.max_cg_iterations = parameters.max_cg_iterations;
     c.rol_trust_region               = parameters.rol_trust_region;
     return c;

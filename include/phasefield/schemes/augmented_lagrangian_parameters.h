@@ -38,6 +38,8 @@ namespace PhaseField
      * of a step.
      */
     unsigned int max_step_trust_region_iterations = 1000;
+    /** Limit of the CG iterations of one attempt of a step, likewise. */
+    unsigned int max_step_cg_iterations = 20000;
     /** Limit of the truncated-CG iterations per trust-region step. */
     unsigned int max_cg_iterations = 2000;
     /** The inner trust-region solver: ours (false) or Trilinos ROL's. */
