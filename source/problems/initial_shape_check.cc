@@ -20,11 +20,11 @@ namespace PhaseField
       return text.str();
     }
 
-    /** "The initial shape (<Geometry / Shape> = circle)". */
+    /** "the initial shape (<Geometry / Shape> = circle)". */
     std::string
     shape_name(const GeometryParameters &geometry)
     {
-      return "The initial shape (<" + geometry.subsection +
+      return "the initial shape (<" + geometry.subsection +
              " / Shape> = " + geometry.shape + ")";
     }
 
@@ -35,16 +35,17 @@ namespace PhaseField
                               const unsigned int             dim)
     {
       const std::string domain = "the domain [0,1]^" + std::to_string(dim);
+      const std::string shape  = "T" + shape_name(geometry).substr(1);
       const std::string remedy = ": there is no interface to evolve. Move <" +
                                  geometry.subsection +
                                  " / Center> or change the shape's size.";
       if (sample.smallest > sample.half_diagonal)
-        throw InputError(shape_name(geometry) + " lies entirely outside " +
-                         domain + " (its signed distance is at least " +
+        throw InputError(shape + " lies entirely outside " + domain +
+                         " (its signed distance is at least " +
                          short_number(sample.smallest) + " everywhere in it)" +
                          remedy);
       if (sample.largest < -sample.half_diagonal)
-        throw InputError(shape_name(geometry) + " contains all of " + domain +
+        throw InputError(shape + " contains all of " + domain +
                          " (its signed distance is at most " +
                          short_number(sample.largest) + " everywhere in it)" +
                          remedy);

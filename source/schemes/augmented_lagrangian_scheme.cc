@@ -556,12 +556,13 @@ namespace PhaseField
     const AugmentedLagrangianReport &al) const
   {
     pcout << "  augmented Lagrangian: no convergence after "
-          << al.outer_iterations << " outer and " << al.tr_iterations
-          << " trust-region iterations (|grad l_A| = " << al.gradient_norm
+          << al.outer_iterations << " outer, " << al.tr_iterations
+          << " trust-region and " << al.cg_iterations
+          << " CG iterations (|grad l_A| = " << al.gradient_norm
           << ", |C| = " << al.constraint_norm
           << "); raise <Augmented Lagrangian / Maximum outer iterations>, "
              "<Maximum trust-region iterations>, <Maximum CG iterations> "
-             "or lower <Time stepping / Tau>."
+             "(or their limits per step) or lower <Time stepping / Tau>."
           << std::endl;
   }
 
