@@ -101,14 +101,24 @@ namespace PhaseField
 
 
 
+    double
+    bytes_per_cell(const unsigned int dim)
+    {
+      constexpr double bytes_per_kb = 1024;
+      return (dim == 2 ? 8 : 1.5) * bytes_per_kb;
+    }
+
+
+
     void
     check_mesh_fits(const double       n_cells,
+                    const unsigned int dim,
                     const unsigned int n_ranks,
                     const std::string &what,
                     const std::string &remedy)
     {
       const double per_rank = n_cells / n_ranks;
-      const double bytes    = per_rank * WillmoreParameters::bytes_per_cell;
+      const double bytes    = per_rank * bytes_per_cell(dim);
       const bool   too_many =
         per_rank > WillmoreParameters::max_uniform_cells_per_rank;
       if (!too_many && bytes <= memory_per_rank())
@@ -122,8 +132,9 @@ namespace PhaseField
         what + " " + std::to_string(static_cast<unsigned long long>(n_cells)) +
         " cells (" + std::to_string(static_cast<unsigned long long>(per_rank)) +
         " per rank on " + std::to_string(n_ranks) + " rank(s), about " +
-        gigabytes(bytes) + " GB per rank at 1 KB per cell); " + limit + ". " +
-        remedy);
+        gigabytes(bytes) + " GB per rank at " +
+        (dim == 2 ? std::string("8") : std::string("1.5")) + " KB per cell); " +
+        limit + ". " + remedy);
     }
   } // namespace MeshSize
 } // namespace PhaseField

@@ -241,7 +241,8 @@ namespace PhaseField
                       "interface; false: uniform mesh at Finest level, "
                       "2^(d Finest level) cells. A mesh of more than 2^24 "
                       "cells per MPI rank, or of more than the memory of a "
-                      "rank at 1 KB per cell (the machine's memory shared "
+                      "rank at 8 KB (2D) or 1.5 KB (3D) per cell (the "
+                      "machine's memory shared "
                       "by the ranks on a node, or `ulimit -v`), is "
                       "rejected before the run; for a narrow band, the "
                       "finest cells of the band around the initial "
@@ -990,6 +991,7 @@ namespace PhaseField
       return;
     MeshSize::check_mesh_fits(
       std::ldexp(1.0, dimension * mesh.finest_level),
+      dimension,
       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
       "<Mesh / Finest level> = " + std::to_string(mesh.finest_level) +
         " with <Mesh / Adaptive> = false is a uniform mesh of",

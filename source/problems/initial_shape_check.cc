@@ -87,6 +87,7 @@ namespace PhaseField
         sample.band_volume(half_width) / std::pow(mesh.h(), dim);
       MeshSize::check_mesh_fits(
         n_cells,
+        dim,
         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
         "<Mesh / Finest level> = " + std::to_string(mesh.finest_level) +
           " with <Mesh / Adaptive> = true is a narrow band (<Mesh / Band "

@@ -7,8 +7,8 @@
 # - a parameter file that starts with a UTF-8 byte order mark runs;
 # - an expression of 400 kB: exit 2, the message quotes 200 characters;
 # - Epsilon = 0.75 h runs with a warning about the resolution;
-# - a uniform 2D mesh at level 12 under `ulimit -v` of 6 GB: exit 2 with
-#   the estimate and the memory per rank (it ran out of memory before);
+# - a uniform 2D mesh at level 10 (about 8.6 GB) under `ulimit -v` of 4 GB:
+#   exit 2 with the estimate and the memory per rank;
 # - shape_from_contour resumed after the last step of its last level:
 #   exit 2, no step to take (as willmore_flow).
 ranks="$1"; mpiexec="$2"; build="$3"; work="$4"
@@ -54,13 +54,14 @@ small --set "Phase field/Epsilon=0.75*h"
 expect "Epsilon = 0.75 h" 0 \
   "Warning: <Phase field / Epsilon> = 0.0234 is 0.75 h at h = 0.031[0-9]*: the mesh hardly resolves the interface"
 
-output=$(ulimit -v 6000000; OMP_NUM_THREADS=1 timeout 60 sh -c '
+output=$(ulimit -v 4000000; OMP_NUM_THREADS=1 timeout 60 sh -c '
   if [ "$1" -eq 1 ]; then shift 2; exec "$@"; fi
-  exec "$2" --allow-run-as-root --oversubscribe -n "$1" "$3" "$4"' \
-  run "$ranks" "$mpiexec" "$flow" "$source_tests/bad_input/uniform_2d_level_12.prm" 2>&1)
+  exec "$2" --allow-run-as-root --oversubscribe -n "$1" "$3" "$4" "$5" "$6"' \
+  run "$ranks" "$mpiexec" "$flow" "$source_tests/bad_input/uniform_2d_level_12.prm" \
+  --set "Mesh/Finest level=10" 2>&1)
 status=$?
-expect "uniform level 12 under ulimit -v 6 GB" 2 \
-  "uniform mesh of 16777216 cells .* about (17|9) GB per rank at 1 KB per cell.; this machine has about [0-9] GB per rank"
+expect "uniform level 10 under ulimit -v 4 GB" 2 \
+  "uniform mesh of 1048576 cells .* about (9|5) GB per rank at 8 KB per cell.; this machine has about [0-4] GB per rank"
 
 contour() {
   run "$ranks" "$build/shape_from_contour" --set "Multilevel/Levels=5" \

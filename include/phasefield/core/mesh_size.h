@@ -34,16 +34,26 @@ namespace PhaseField
     memory_per_rank();
 
     /**
+     * The memory a run needs per cell of its mesh in @p dim dimensions:
+     * 8 KB in 2D (direct solver: 2.0 GiB for the 262,144 cells of a
+     * uniform level-9 mesh), 1.5 KB in 3D (matrix-free solver: 5.3 GB for
+     * the 3.9 million cells of the level-8 sphere).
+     */
+    double
+    bytes_per_cell(const unsigned int dim);
+
+    /**
      * Throw an InputError if @p n_cells cells on @p n_ranks ranks are more
      * than WillmoreParameters::max_uniform_cells_per_rank (2^24) per rank,
-     * or need more than memory_per_rank() at
-     * WillmoreParameters::bytes_per_cell (1 KB). The message is @p what (which
+     * or need more than memory_per_rank() at bytes_per_cell(@p dim). The
+     * message is @p what (which
      * names the parameters and ends with "of"), the number of cells, the
      * memory per rank, the limit, and @p remedy. Not collective: the same
      * on every rank for the same arguments.
      */
     void
     check_mesh_fits(const double       n_cells,
+                    const unsigned int dim,
                     const unsigned int n_ranks,
                     const std::string &what,
                     const std::string &remedy);
