@@ -12,7 +12,7 @@ ranks="$1"; mpiexec="$2"; program="$3"; work="$4"
 . "$(dirname "$0")/common.sh"
 rm -rf "$work"; mkdir -p "$work"
 # one step of about 560 trust-region iterations in four attempts
-time_limit=300
+time_limit=360
 run "$ranks" "$program" --set "Dimension=3" --set "Geometry/Shape=sphere" \
   --set "Geometry/Radius=0.3" --set "Mesh/Coarsest level=2" \
   --set "Mesh/Finest level=4" --set "Mesh/Band width=2" \
