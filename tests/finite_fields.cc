@@ -1,12 +1,13 @@
 // No silent NaN in the VTU output: check_output_fields_finite(), which
 // TimeLoop::output_results() calls before a VTU file is written, throws on
-// every rank for a field with a NaN or an Inf (owned by the last rank
-// only), with a message naming the step, the field, the number of such
-// entries and the parameter to change, and accepts finite fields; thrown
-// in a program, it ends run_program() with exit status 1. No input is
-// known that makes a converged step non-finite (the energies are checked
-// before, and Newton fails on a non-finite residual), so the check is
-// tested directly. The .mpirun=2 variant puts the bad entry on rank 1.
+// every rank for a field with a NaN or an Inf, or an entry that the
+// VTU file's 32-bit floats cannot hold (owned by the last rank only), with a
+// message naming the step, the field, the number of such entries and the
+// parameter to change, and accepts finite fields; thrown in a program, it ends
+// run_program() with exit status 1. No input is known that makes a converged
+// step non-finite (the energies are checked before, and Newton fails on a
+// non-finite residual), so the check is tested directly. The .mpirun=2 variant
+// puts the bad entry on rank 1.
 
 #include "tests.h"
 
@@ -108,6 +109,15 @@ main(int argc, char **argv)
             "<Time stepping / Inner tau>",
             {{"U", &ones}, {"curvature", &inf}},
             {"<curvature> has 1 entries", "<Time stepping / Inner tau>"});
+      // finite as a double, Inf as the VTU file's 32-bit float
+      const Vector beyond_float  = field(1e39);
+      const Vector largest_float = field(std::numeric_limits<float>::max());
+      check("1e39 in P (Inf as a 32-bit float): thrown on every rank",
+            {{"U", &ones}, {"P", &beyond_float}},
+            {"Step 7", "<P> has 1 entries", "32-bit floats"});
+      check("the largest 32-bit float accepted",
+            {{"U", &ones}, {"P", &largest_float}},
+            {});
       Testing::log().flush();
       // not caught here: run_program() turns it into the exit status
       PhaseField::check_output_fields_finite(step, {{"U", &nan}});

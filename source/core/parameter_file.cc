@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <phasefield/core/parameters.h>
 #include <sstream>
 #include <string>
@@ -105,9 +106,17 @@ namespace PhaseField
       throw InputError("Cannot open the parameter file <" + filename + ">.");
     std::vector<std::string> chain;
     check_include_cycles(filename, chain);
+    // a UTF-8 byte order mark (editors on Windows write one) is not part
+    // of the first line
+    std::string       text{std::istreambuf_iterator<char>(file),
+                     std::istreambuf_iterator<char>()};
+    const std::string byte_order_mark = "\xEF\xBB\xBF";
+    if (text.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
+      text.erase(0, byte_order_mark.size());
+    std::istringstream input(text);
     try
       {
-        prm.parse_input(file, filename);
+        prm.parse_input(input, filename);
       }
     catch (const ExceptionBase &exc)
       {

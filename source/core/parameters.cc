@@ -7,6 +7,8 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
+#include <phasefield/core/mesh_size.h>
+#include <phasefield/core/message_text.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/parser_messages.h>
 #include <sstream>
@@ -14,6 +16,20 @@
 namespace PhaseField
 {
   using namespace dealii;
+
+  namespace
+  {
+    /** @p value with 6 significant digits (1e+30, not 31 digits). */
+    std::string
+    number_text(const double value)
+    {
+      std::ostringstream text;
+      text << value;
+      return text.str();
+    }
+  } // namespace
+
+
 
   double
   evaluate_expression_in_h(const std::string &expression,
@@ -30,14 +46,15 @@ namespace PhaseField
       }
     catch (const ExceptionBase &exc)
       {
-        throw InputError("The parameter <" + parameter_name +
-                         "> has the value <" + expression +
-                         ">, which is not a valid expression in h: " +
-                         parser_message(parser_output.text(), exc) + ".");
+        throw InputError(
+          "The parameter <" + parameter_name + "> has the value <" +
+          abbreviated(expression) +
+          ">, which is not a valid expression in h: " +
+          abbreviated(parser_message(parser_output.text(), exc)) + ".");
       }
     if (!std::isfinite(value))
       throw InputError(
-        "The parameter <" + parameter_name + "> = <" + expression +
+        "The parameter <" + parameter_name + "> = <" + abbreviated(expression) +
         "> evaluates to a non-finite number at h = " + std::to_string(h) + ".");
     return value;
   }
@@ -222,9 +239,14 @@ namespace PhaseField
                       Patterns::Bool(),
                       "true: narrow band of finest cells around the "
                       "interface; false: uniform mesh at Finest level, "
-                      "2^(d Finest level) cells; more than 2^24 cells per "
-                      "MPI rank (about 16 GB per rank at 1 KB per cell) "
-                      "are rejected.");
+                      "2^(d Finest level) cells. A mesh of more than 2^24 "
+                      "cells per MPI rank, or of more than the memory of a "
+                      "rank at 8 KB (2D) or 1.5 KB (3D) per cell (the "
+                      "machine's memory shared "
+                      "by the ranks on a node, or `ulimit -v`), is "
+                      "rejected before the run; for a narrow band, the "
+                      "finest cells of the band around the initial "
+                      "interface are estimated (a lower bound).");
     prm.declare_entry("Band width",
                       "4",
                       Patterns::Double(0.5),
@@ -301,14 +323,18 @@ namespace PhaseField
                       "4*h",
                       Patterns::Anything(),
                       "Interface width epsilon, an expression in the finest "
-                      "mesh size h, e.g. 4*h or 2^-6.");
+                      "mesh size h, e.g. 4*h or 2^-6. At least h/2 (below h "
+                      "a warning: the mesh hardly resolves the interface), "
+                      "and below the largest distance of a point of the "
+                      "domain to the initial interface.");
     prm.leave_subsection();
 
     prm.enter_subsection("Time stepping");
     prm.declare_entry("Tau",
                       "h^2",
                       Patterns::Anything(),
-                      "Outer (Willmore) time step, an expression in h.");
+                      "Outer (Willmore) time step, an expression in h; at "
+                      "most 1.");
     prm.declare_entry("Inner tau",
                       "h^2",
                       Patterns::Anything(),
@@ -435,9 +461,9 @@ namespace PhaseField
                                    const std::string &name,
                                    const std::string &expression) {
       if (!(value > 0))
-        throw InputError("The parameter <" + name + "> = <" + expression +
-                         "> evaluates to " + std::to_string(value) +
-                         ", but must be positive.");
+        throw InputError("The parameter <" + name + "> = <" +
+                         abbreviated(expression) + "> evaluates to " +
+                         std::to_string(value) + ", but must be positive.");
     };
     check_positive(epsilon, "Phase field / Epsilon", epsilon_expression);
     check_positive(tau, "Time stepping / Tau", tau_expression);
@@ -445,13 +471,36 @@ namespace PhaseField
                    "Time stepping / Inner tau",
                    inner_tau_expression);
     step_control.evaluate(h, step_size(1));
+    // Willmore flow moves a circle of radius r0 to (2 t + r0^4)^(1/4):
+    // in a time of 1 every shape of the unit cell grows out of it
+    constexpr double largest_tau = 1;
+    if (tau > largest_tau)
+      throw InputError("The parameter <Time stepping / Tau> = <" +
+                       abbreviated(tau_expression) + "> evaluates to " +
+                       number_text(tau) +
+                       ", but must be at most 1: in a time of 1 Willmore "
+                       "flow changes every shape in the unit cell beyond "
+                       "recognition (a circle of radius r0 grows to (2 t + "
+                       "r0^4)^(1/4) > 1), so one such step destroys the "
+                       "interface. Use e.g. h^2 or 0.03*h.");
+    // tanh(d / eps) on cells of size h: below h/2 the interface is a jump
+    // between two nodes, and its energies are noise (W 1e-18 at 0.2 h)
+    constexpr double smallest_epsilon_per_h = 0.5;
+    if (epsilon < smallest_epsilon_per_h * h)
+      throw InputError("The parameter <Phase field / Epsilon> = <" +
+                       abbreviated(epsilon_expression) + "> evaluates to " +
+                       std::to_string(epsilon) + " (" +
+                       std::to_string(epsilon / h) +
+                       " h at h = " + std::to_string(h) +
+                       "), but must be at least h/2: the mesh cannot "
+                       "resolve a thinner interface. Use e.g. 4*h.");
     // V - U is of the size inner tau / h^2: below this bound it is within
     // 10^4 of the round-off of U, and the curvature (U - V) / inner tau
     // is noise (or not finite: 1e-300 overflowed the inner problem)
     constexpr double smallest_inner_tau_per_h2 = 1e-12;
     if (inner_tau < smallest_inner_tau_per_h2 * h * h)
       throw InputError("The parameter <Time stepping / Inner tau> = <" +
-                       inner_tau_expression + "> evaluates to " +
+                       abbreviated(inner_tau_expression) + "> evaluates to " +
                        std::to_string(inner_tau) + " (" +
                        std::to_string(inner_tau / (h * h)) +
                        " h^2), but must be at least 1e-12 h^2: V - U is of the "
@@ -550,8 +599,8 @@ namespace PhaseField
         evaluate_expression_in_h(expression, h, "Time stepping / " + name);
       if (value < 0)
         throw InputError(
-          "The parameter <Time stepping / " + name + "> = <" + expression +
-          "> evaluates to " + std::to_string(value) +
+          "The parameter <Time stepping / " + name + "> = <" +
+          abbreviated(expression) + "> evaluates to " + std::to_string(value) +
           ", but must be positive (or 0: " +
           (name == "End time" ? "no end time" : "no limit") + ").");
       return value;
@@ -562,11 +611,12 @@ namespace PhaseField
       evaluate_non_negative(largest_step_expression, "Largest step");
     end_time = evaluate_non_negative(end_time_expression, "End time");
     if (largest_step > 0 && smallest_step > largest_step)
-      throw InputError(
-        "<Time stepping / Smallest step> = <" + smallest_step_expression +
-        "> = " + std::to_string(smallest_step) +
-        " is larger than <Time stepping / Largest step> = <" +
-        largest_step_expression + "> = " + std::to_string(largest_step) + ".");
+      throw InputError("<Time stepping / Smallest step> = <" +
+                       abbreviated(smallest_step_expression) +
+                       "> = " + std::to_string(smallest_step) +
+                       " is larger than <Time stepping / Largest step> = <" +
+                       abbreviated(largest_step_expression) +
+                       "> = " + std::to_string(largest_step) + ".");
     if (control == StepControl::adaptive &&
         (tau < smallest_step || (largest_step > 0 && tau > largest_step)))
       throw InputError(
@@ -1002,20 +1052,12 @@ namespace PhaseField
   {
     if (mesh.adaptive)
       return;
-    const unsigned int n_ranks =
-      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    const double n_cells = std::ldexp(1.0, dimension * mesh.finest_level);
-    if (n_cells <= max_uniform_cells_per_rank * n_ranks)
-      return;
-    const double gigabytes = n_cells * bytes_per_cell / n_ranks / 1e9;
-    throw InputError(
+    MeshSize::check_mesh_fits(
+      std::ldexp(1.0, dimension * mesh.finest_level),
+      dimension,
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
       "<Mesh / Finest level> = " + std::to_string(mesh.finest_level) +
-      " with <Mesh / Adaptive> = false is a uniform mesh of " +
-      std::to_string(static_cast<unsigned long long>(n_cells)) + " cells (" +
-      std::to_string(static_cast<unsigned long long>(n_cells / n_ranks)) +
-      " per rank on " + std::to_string(n_ranks) + " rank(s), about " +
-      std::to_string(static_cast<long long>(std::ceil(gigabytes))) +
-      " GB per rank at 1 KB per cell); the limit is 2^24 cells per rank. "
+        " with <Mesh / Adaptive> = false is a uniform mesh of",
       "Use a smaller level, Adaptive = true, or more ranks.");
   }
 

@@ -2,6 +2,7 @@
 #include <iostream>
 #include <phasefield/core/blas_kernels.h>
 #include <phasefield/core/file_io.h>
+#include <phasefield/core/mesh_size.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/program.h>
 #include <phasefield/core/stop_request.h>
@@ -208,6 +209,7 @@ namespace PhaseField
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const OutputLockRelease          release_locks_at_return;
     install_stop_handlers();
+    MeshSize::determine_memory_per_rank(MPI_COMM_WORLD);
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     const std::string blas_message = select_blas_kernels();
     if (root && !blas_message.empty())

@@ -19,32 +19,58 @@ namespace PhaseField
   namespace
   {
     /**
+     * Whether @p entry of a statistics row is a number as add_row() writes
+     * it (also nan, the l2_error of shapes without an exact solution, and
+     * inf).
+     */
+    bool
+    is_statistics_number(const std::string &entry)
+    {
+      std::size_t consumed = 0;
+      try
+        {
+          std::stod(entry, &consumed);
+        }
+      catch (...)
+        {
+          return false;
+        }
+      return !entry.empty() && consumed == entry.size();
+    }
+
+
+
+    /**
      * The step (first entry) of the row @p line, line @p line_number of
-     * @p filename; throws InputError naming both if it is not a
+     * @p filename, whose header has @p n_columns columns; throws
+     * InputError naming both if the row does not have n_columns entries
+     * that are numbers (is_statistics_number()), or the step is not a
      * non-negative integer.
      */
     double
     step_of_row(const std::string &line,
                 const std::string &filename,
-                const unsigned int line_number)
+                const unsigned int line_number,
+                const std::size_t  n_columns)
     {
-      const std::string entry    = line.substr(0, line.find(','));
-      std::size_t       consumed = 0;
-      double            step     = -1;
-      try
-        {
-          step = std::stod(entry, &consumed);
-        }
-      catch (...)
-        {
-          consumed = 0;
-        }
-      if (entry.empty() || consumed != entry.size() || !(step >= 0) ||
-          step != std::floor(step) || line.find(',') == std::string::npos)
+      const std::vector<std::string> entries =
+        dealii::Utilities::split_string_list(line, ',');
+      std::string problem;
+      if (entries.size() != n_columns)
+        problem = "has " + std::to_string(entries.size()) +
+                  " entries instead of " + std::to_string(n_columns);
+      for (std::size_t i = 0; i < entries.size() && problem.empty(); ++i)
+        if (!is_statistics_number(entries[i]))
+          problem = "has <" + entries[i].substr(0, 40) + "> in column " +
+                    std::to_string(i + 1) + ", which is not a number";
+      const double step = problem.empty() ? std::stod(entries[0]) : -1;
+      if (problem.empty() && !(step >= 0 && step == std::floor(step)))
+        problem = "does not begin with a step number";
+      if (!problem.empty())
         throw InputError("Cannot continue <" + filename + ">: line " +
                          std::to_string(line_number) + " <" +
-                         line.substr(0, 80) +
-                         "> is not a row of statistics (damaged file?).");
+                         line.substr(0, 80) + "> " + problem +
+                         ": it is not a row of statistics (damaged file?).");
       return step;
     }
 
@@ -71,12 +97,15 @@ namespace PhaseField
         throw InputError("Cannot continue <" + filename + ">: its columns <" +
                          line + "> are not those of this run <" + header +
                          ">.");
+      const std::size_t n_columns =
+        dealii::Utilities::split_string_list(header, ',').size();
       std::vector<std::string> rows;
       for (unsigned int line_number = 2; std::getline(in, line); ++line_number)
         {
           if (line.empty())
             continue;
-          const double step = step_of_row(line, filename, line_number);
+          const double step =
+            step_of_row(line, filename, line_number, n_columns);
           if (step > last_kept_step)
             break;
           rows.push_back(line);

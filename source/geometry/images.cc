@@ -458,8 +458,12 @@ namespace PhaseField
     {
       const std::string file =
         "The image file <" + filename + "> given in <" + parameter_name + ">";
-      if (!std::filesystem::is_regular_file(filename))
+      std::error_code error;
+      if (!std::filesystem::exists(filename, error))
         throw InputError(file + " does not exist.");
+      if (!std::filesystem::is_regular_file(filename, error))
+        throw InputError(file + " is not a regular file (a directory, a "
+                                "device or a pipe?).");
       vtkNew<vtkPNGReader> reader;
       if (reader->CanReadFile(filename.c_str()) == 0)
         throw InputError(file + " is not a readable PNG image.");

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <functional>
+#include <phasefield/core/message_text.h>
 #include <phasefield/core/parser_messages.h>
 #include <phasefield/geometry/shapes.h>
 #include <sstream>
@@ -27,9 +28,13 @@ namespace PhaseField
               p[d] = default_value;
             return p;
           }
-        if (values.size() < dim)
-          throw InputError("The parameter <" + parameter_name + "> needs " +
-                           std::to_string(dim) + " comma separated entries.");
+        if (values.size() != dim)
+          throw InputError("The parameter <" + parameter_name + "> has " +
+                           std::to_string(values.size()) + " entries, but " +
+                           "needs " + std::to_string(dim) +
+                           " comma separated entries (one per coordinate "
+                           "of <Dimension> = " +
+                           std::to_string(dim) + ").");
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = values[d];
         return p;
@@ -157,8 +162,8 @@ namespace PhaseField
                 std::ostringstream where;
                 where << p;
                 throw InputError("The parameter <Geometry / Expression> = <" +
-                                 expression + "> is not finite at (" +
-                                 where.str() +
+                                 abbreviated(expression) +
+                                 "> is not finite at (" + where.str() +
                                  "): it must be a finite "
                                  "signed distance everywhere in [0,1]^" +
                                  std::to_string(dim) + ".");
@@ -186,11 +191,11 @@ namespace PhaseField
           }
         catch (const ExceptionBase &exc)
           {
-            throw InputError("The parameter <Geometry / Expression> = <" +
-                             expression + "> is not a valid expression in " +
-                             FunctionParser<dim>::default_variable_names() +
-                             ": " + parser_message(parser_output.text(), exc) +
-                             ".");
+            throw InputError(
+              "The parameter <Geometry / Expression> = <" +
+              abbreviated(expression) + "> is not a valid expression in " +
+              FunctionParser<dim>::default_variable_names() + ": " +
+              abbreviated(parser_message(parser_output.text(), exc)) + ".");
           }
         check_finite_on_grid(*parser, expression);
         return parser;
@@ -237,53 +242,53 @@ namespace PhaseField
       std::unique_ptr<Function<dim>>
       create_shape_distance(const GeometryParameters &geometry)
       {
-      const std::string &shape  = geometry.shape;
-      const Point<dim>   center = shape_center<dim>(geometry);
-      const double       r      = geometry.radius;
-      if (!(r > 0) && (shape == "circle" || shape == "quarter circle" ||
-                       shape == "sphere" || shape == "two circles"))
-        throw InputError("<Geometry / Radius> must be positive.");
+        const std::string &shape  = geometry.shape;
+        const Point<dim>   center = shape_center<dim>(geometry);
+        const double       r      = geometry.radius;
+        if (!(r > 0) && (shape == "circle" || shape == "quarter circle" ||
+                         shape == "sphere" || shape == "two circles"))
+          throw InputError("<Geometry / Radius> must be positive.");
 
-      if (shape == "circle" || shape == "quarter circle" || shape == "sphere")
-        return std::make_unique<SphereDistance<dim>>(center, r);
+        if (shape == "circle" || shape == "quarter circle" || shape == "sphere")
+          return std::make_unique<SphereDistance<dim>>(center, r);
 
-      if (shape == "two circles")
-        {
-          Point<dim> second = to_point<dim>(geometry.second_center,
-                                            0.5,
-                                            "Geometry / Second center");
-          if (geometry.second_center.empty())
-            second[0] = 0.65;
-          return std::make_unique<FunctionFromCallable<dim>>(
-            [center, second, r](const Point<dim> &p) {
-              return std::min(p.distance(center), p.distance(second)) - r;
-            });
-        }
+        if (shape == "two circles")
+          {
+            Point<dim> second = to_point<dim>(geometry.second_center,
+                                              0.5,
+                                              "Geometry / Second center");
+            if (geometry.second_center.empty())
+              second[0] = 0.65;
+            return std::make_unique<FunctionFromCallable<dim>>(
+              [center, second, r](const Point<dim> &p) {
+                return std::min(p.distance(center), p.distance(second)) - r;
+              });
+          }
 
-      if (shape == "rectangle" || shape == "cube")
-        {
-          std::vector<double> half = expand_sizes(geometry.sizes, dim, shape);
-          for (double &s : half)
-            s *= 0.5;
-          return std::make_unique<FunctionFromCallable<dim>>(
-            [center, half](const Point<dim> &p) {
-              return box_distance<dim>(p - center, half);
-            });
-        }
+        if (shape == "rectangle" || shape == "cube")
+          {
+            std::vector<double> half = expand_sizes(geometry.sizes, dim, shape);
+            for (double &s : half)
+              s *= 0.5;
+            return std::make_unique<FunctionFromCallable<dim>>(
+              [center, half](const Point<dim> &p) {
+                return box_distance<dim>(p - center, half);
+              });
+          }
 
-      if (shape == "disc")
-        return disc_distance<dim>(center, geometry.sizes);
+        if (shape == "disc")
+          return disc_distance<dim>(center, geometry.sizes);
 
-      if (shape == "ellipsoid")
-        return ellipsoid_distance<dim>(center, geometry.sizes);
+        if (shape == "ellipsoid")
+          return ellipsoid_distance<dim>(center, geometry.sizes);
 
-      if (shape == "torus")
-        return torus_distance<dim>(center, geometry.sizes);
+        if (shape == "torus")
+          return torus_distance<dim>(center, geometry.sizes);
 
-      if (shape == "function")
-        return parsed_distance<dim>(geometry.expression);
+        if (shape == "function")
+          return parsed_distance<dim>(geometry.expression);
 
-      throw InputError("Unknown <Geometry / Shape> = <" + shape + ">.");
+        throw InputError("Unknown <Geometry / Shape> = <" + shape + ">.");
       }
     } // namespace
 
@@ -301,9 +306,10 @@ namespace PhaseField
         {
           // the messages name <Geometry / ...>: say where the shape was
           std::string       message = error.what();
-          const std::string from = "<Geometry / ", to = "<" + geometry.subsection + " / ";
+          const std::string from    = "<Geometry / ",
+                            to      = "<" + geometry.subsection + " / ";
           for (std::size_t at = message.find(from); at != std::string::npos;
-               at = message.find(from, at + to.size()))
+               at             = message.find(from, at + to.size()))
             message.replace(at, from.size(), to);
           throw InputError(message);
         }

@@ -6,6 +6,7 @@
 #include <phasefield/geometry/shapes.h>
 #include <phasefield/problems/contour_output.h>
 #include <phasefield/problems/contour_problem.h>
+#include <phasefield/problems/initial_shape_check.h>
 #include <phasefield/time/checkpoint.h>
 #include <sstream>
 #include <stdexcept>
@@ -30,6 +31,39 @@ namespace PhaseField
       // the mesh is refined level by level up to the last one
       setup.finest_level = parameters.multilevel.levels.back();
       return setup;
+    }
+
+    /**
+     * Throw an InputError if the target labeling @p alpha (on the pixel
+     * grid of @p level) is below smallest_target_label everywhere: an
+     * empty target (a shape outside the domain or covering it, or an image
+     * of zeros) has no contour, and the flow towards it only destroys the
+     * shape.
+     */
+    void
+    check_target_not_empty(const std::vector<double> &alpha,
+                           const TargetParameters    &target,
+                           const unsigned int         level)
+    {
+      constexpr double smallest_target_label = 1e-3;
+      double           largest               = 0;
+      for (const double value : alpha)
+        largest = std::max(largest, std::abs(value));
+      if (largest >= smallest_target_label)
+        return;
+      const std::string check =
+        target.is_image() ?
+          "Check <Target / Image file> (not all black) and <Target / Maximum "
+          "label> (positive)." :
+          "The target shape (<Target / Shape> = " + target.shape.shape +
+            ") must cross the domain [0,1]^d, neither outside it nor "
+            "covering it: check <Target / Center>, <Radius>, <Sizes> or "
+            "<Expression>.";
+      throw InputError("The target labeling alpha* is below " +
+                       std::to_string(smallest_target_label) +
+                       " at every point of the pixel grid of level " +
+                       std::to_string(level) +
+                       ": the target has no contour to fit. " + check);
     }
   } // namespace
 
@@ -109,8 +143,11 @@ namespace PhaseField
         start_level(i);
         typename TimeLoop<dim>::Settings settings =
           this->time_loop_settings(this->level_parameters);
-        // a level whose steps are done continues with the next one
-        settings.refuse_empty_resume = false;
+        // a level whose steps are done continues with the next one; a
+        // resume after the last level's steps is refused, as in the
+        // other programs
+        settings.refuse_empty_resume =
+          i + 1 == parameters.multilevel.levels.size();
         if (parameters.time_stepping.step_size_control)
           settings.largest_step_factor =
             parameters.time_stepping.largest_tau_factor;
@@ -328,14 +365,17 @@ namespace PhaseField
   ContourProblem<dim>::start_level(const unsigned int index)
   {
     TimerOutput::Scope t(this->computing_timer, "labeling: target");
-    level_index              = index;
-    this->level_parameters   = parameters.for_level(index);
-    const unsigned int level = this->level_parameters.mesh.finest_level;
-    mismatch_term            = std::make_unique<MismatchTerm<dim>>(
-      this->discretization,
-      level,
-      target_on(HuffmanLabeling::LabelingGrid<dim>(level)),
-      parameters.model.mismatch_weight);
+    level_index               = index;
+    this->level_parameters    = parameters.for_level(index);
+    const unsigned int  level = this->level_parameters.mesh.finest_level;
+    std::vector<double> target =
+      target_on(HuffmanLabeling::LabelingGrid<dim>(level));
+    check_target_not_empty(target, parameters.target, level);
+    mismatch_term =
+      std::make_unique<MismatchTerm<dim>>(this->discretization,
+                                          level,
+                                          std::move(target),
+                                          parameters.model.mismatch_weight);
     criterion_history.clear();
     tau_factor = 1;
     this->pcout << "level " << this->level_parameters.mesh.finest_level
@@ -349,6 +389,10 @@ namespace PhaseField
                       " at most" :
                       "")
                 << std::endl;
+    const std::string warning =
+      epsilon_resolution_warning(this->level_parameters);
+    if (!warning.empty())
+      this->pcout << "Warning: " << warning << std::endl;
   }
 
 

@@ -6,6 +6,7 @@
 #include <phasefield/core/constants.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/geometry/shapes.h>
+#include <phasefield/problems/initial_shape_check.h>
 #include <phasefield/problems/phase_field_problem.h>
 #include <phasefield/schemes/scheme_registry.h>
 
@@ -77,6 +78,12 @@ namespace PhaseField
   void
   PhaseFieldProblem<dim>::run()
   {
+    const unsigned int finest_level =
+      discretization.get_settings().mesh.finest_level;
+    if (setup.signed_distance)
+      check_initial_shape(*setup.signed_distance,
+                          willmore_parameters,
+                          willmore_parameters.for_finest_level(finest_level));
     create_output_directory(willmore_parameters.output_directory,
                             mpi_communicator);
     set_first_level();
@@ -258,7 +265,13 @@ namespace PhaseField
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI rank(s), " << scheme->linear_solver_description()
           << " linear solver" << std::endl;
-    for (const std::string &warning : scheme->warnings())
+    std::vector<std::string> warnings = scheme->warnings();
+    const std::string        epsilon =
+      epsilon_resolution_warning(willmore_parameters.for_finest_level(
+        discretization.get_settings().mesh.finest_level));
+    if (!epsilon.empty())
+      warnings.push_back(epsilon);
+    for (const std::string &warning : warnings)
       pcout << "Warning: " << warning << std::endl;
   }
 

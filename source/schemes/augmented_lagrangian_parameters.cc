@@ -32,7 +32,7 @@ namespace PhaseField
                       Patterns::Double(0),
                       "lambda0: the penalty of the first step; each later "
                       "step starts from max(lambda_final / <Penalty "
-                      "reduction per step>, lambda0).");
+                      "reduction per step>, lambda0). At most 1e16.");
     prm.declare_entry(
       "Penalty reduction per step",
       text(defaults.penalty_reduction),
@@ -61,6 +61,25 @@ namespace PhaseField
                       Patterns::Integer(1),
                       "Trust-region iterations per minimisation of l_A "
                       "before the step is halved.");
+    prm.declare_entry(
+      "Maximum trust-region iterations per step",
+      text(defaults.max_step_trust_region_iterations),
+      Patterns::Integer(1),
+      "Trust-region iterations of one attempt of a time step, summed over "
+      "its outer iterations, before the step is halved. With <Maximum CG "
+      "iterations per step> it bounds the work of an attempt, and a step "
+      "has at most <Newton / Maximum step halvings> + 1 attempts, so that "
+      "every step ends (a step that the augmented Lagrangian cannot take, "
+      "e.g. on a mesh far too coarse for epsilon, fails instead of "
+      "running for hours).");
+    prm.declare_entry(
+      "Maximum CG iterations per step",
+      text(defaults.max_step_cg_iterations),
+      Patterns::Integer(1),
+      "Truncated-CG iterations of one attempt of a time step, summed over "
+      "its trust-region and outer iterations, before the step is halved "
+      "(own trust region only; see Maximum trust-region iterations per "
+      "step).");
     prm.declare_entry("Maximum CG iterations",
                       text(defaults.max_cg_iterations),
                       Patterns::Integer(1),
@@ -78,6 +97,20 @@ namespace PhaseField
 
 
 
+  namespace
+  {
+    /** @p value as a message shows it. */
+    std::string
+    number_text(const double value)
+    {
+      std::ostringstream text;
+      text << value;
+      return text.str();
+    }
+  } // namespace
+
+
+
   void
   AugmentedLagrangianParameters::parse_parameters(ParameterHandler &prm)
   {
@@ -91,8 +124,11 @@ namespace PhaseField
     max_outer_iterations = prm.get_integer("Maximum outer iterations");
     max_trust_region_iterations =
       prm.get_integer("Maximum trust-region iterations");
-    max_cg_iterations = prm.get_integer("Maximum CG iterations");
-    rol_trust_region  = prm.get("Trust-region solver") == "rol";
+    max_step_trust_region_iterations =
+      prm.get_integer("Maximum trust-region iterations per step");
+    max_step_cg_iterations = prm.get_integer("Maximum CG iterations per step");
+    max_cg_iterations      = prm.get_integer("Maximum CG iterations");
+    rol_trust_region       = prm.get("Trust-region solver") == "rol";
     prm.leave_subsection();
     if (!(gradient_tolerance > 0) || !(constraint_tolerance > 0))
       throw InputError("<Augmented Lagrangian / Gradient tolerance> and "
@@ -100,6 +136,17 @@ namespace PhaseField
     if (!(initial_penalty > 0))
       throw InputError(
         "<Augmented Lagrangian / Initial penalty> must be positive.");
+    // lambda |C|^2 / 2 against the objective: beyond 1 / round-off the
+    // objective drowns in the round-off of the penalty term (and at 1e300
+    // the matrices overflow)
+    constexpr double largest_initial_penalty = 1e16;
+    if (initial_penalty > largest_initial_penalty)
+      throw InputError(
+        "<Augmented Lagrangian / Initial penalty> = " +
+        number_text(initial_penalty) +
+        " is above 1e16: the objective would drown in the round-off of the "
+        "penalty term, and the matrices of the steps overflow. The penalty "
+        "grows by itself where the constraint needs it; start from e.g. 10.");
     // on 2 ranks ROL's trust region does not reach the gradient
     // tolerance of tests/rol_trust_region.cc (not investigated)
     if (rol_trust_region &&

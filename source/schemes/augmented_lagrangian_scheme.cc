@@ -441,11 +441,14 @@ namespace PhaseField
   AugmentedLagrangianScheme<dim>::control() const
   {
     AugmentedLagrangianControl c;
-    c.gradient_tolerance             = parameters.gradient_tolerance;
-    c.constraint_tolerance           = parameters.constraint_tolerance;
-    c.initial_penalty                = next_penalty;
-    c.max_outer_iterations           = parameters.max_outer_iterations;
-    c.trust_region.max_iterations    = parameters.max_trust_region_iterations;
+    c.gradient_tolerance          = parameters.gradient_tolerance;
+    c.constraint_tolerance        = parameters.constraint_tolerance;
+    c.initial_penalty             = next_penalty;
+    c.max_outer_iterations        = parameters.max_outer_iterations;
+    c.trust_region.max_iterations = parameters.max_trust_region_iterations;
+    c.max_total_trust_region_iterations =
+      parameters.max_step_trust_region_iterations;
+    c.max_total_cg_iterations        = parameters.max_step_cg_iterations;
     c.trust_region.max_cg_iterations = parameters.max_cg_iterations;
     c.rol_trust_region               = parameters.rol_trust_region;
     return c;
@@ -553,12 +556,13 @@ namespace PhaseField
     const AugmentedLagrangianReport &al) const
   {
     pcout << "  augmented Lagrangian: no convergence after "
-          << al.outer_iterations << " outer and " << al.tr_iterations
-          << " trust-region iterations (|grad l_A| = " << al.gradient_norm
+          << al.outer_iterations << " outer, " << al.tr_iterations
+          << " trust-region and " << al.cg_iterations
+          << " CG iterations (|grad l_A| = " << al.gradient_norm
           << ", |C| = " << al.constraint_norm
           << "); raise <Augmented Lagrangian / Maximum outer iterations>, "
              "<Maximum trust-region iterations>, <Maximum CG iterations> "
-             "or lower <Time stepping / Tau>."
+             "(or their limits per step) or lower <Time stepping / Tau>."
           << std::endl;
   }
 

@@ -134,10 +134,18 @@ namespace PhaseField
       report.initial_gradient_norm   = problem.gradient_norm(g);
       report.initial_constraint_norm = constraint_norm(problem, x, m_inverse_c);
     }
-    while (report.outer_iterations < control.max_outer_iterations)
+    while (report.outer_iterations < control.max_outer_iterations &&
+           report.tr_iterations < control.max_total_trust_region_iterations &&
+           report.cg_iterations < control.max_total_cg_iterations)
       {
         ++report.outer_iterations;
         inner.gradient_tolerance = std::max(w, control.gradient_tolerance);
+        inner.max_iterations =
+          std::min(control.trust_region.max_iterations,
+                   control.max_total_trust_region_iterations -
+                     report.tr_iterations);
+        inner.max_total_cg_iterations =
+          control.max_total_cg_iterations - report.cg_iterations;
         AugmentedLagrangianObjective objective(problem, p, lambda);
         const TrustRegionReport      tr =
           control.rol_trust_region ?

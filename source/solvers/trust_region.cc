@@ -148,6 +148,7 @@ namespace PhaseField
     while (!(report.gradient_norm <= control.gradient_tolerance))
       {
         if (report.iterations == control.max_iterations ||
+            report.cg_iterations >= control.max_total_cg_iterations ||
             radius < TrustRegion::min_radius * initial_radius ||
             !std::isfinite(value) || !std::isfinite(report.gradient_norm))
           {
@@ -158,8 +159,15 @@ namespace PhaseField
         const double tolerance =
           std::min(TrustRegion::cg_forcing, std::sqrt(report.gradient_norm)) *
           report.gradient_norm;
-        const TruncatedCGResult step = truncated_cg(
-          objective, g, radius, tolerance, control.max_cg_iterations, s);
+        const TruncatedCGResult step =
+          truncated_cg(objective,
+                       g,
+                       radius,
+                       tolerance,
+                       std::min(control.max_cg_iterations,
+                                control.max_total_cg_iterations -
+                                  report.cg_iterations),
+                       s);
         report.cg_iterations += step.iterations;
         trial = x;
         trial += s;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <phasefield/core/block_vector_tools.h>
 #include <phasefield/core/file_io.h>
@@ -8,6 +9,35 @@
 namespace PhaseField
 {
   using namespace dealii;
+
+
+
+  namespace
+  {
+    /**
+     * Throw an InputError if @p allowed_changes (`Checkpoint / Allow
+     * parameter change`) names a parameter that is not among the
+     * recorded @p parameters: a misspelt name would otherwise allow
+     * nothing, silently.
+     */
+    void
+    check_allowed_changes(const Checkpoint::Parameters   &parameters,
+                          const std::vector<std::string> &allowed_changes)
+    {
+      std::string recorded;
+      for (const auto &[name, value] : parameters)
+        recorded += (recorded.empty() ? "" : ", ") + name;
+      for (const std::string &name : allowed_changes)
+        if (std::none_of(parameters.begin(),
+                         parameters.end(),
+                         [&](const auto &p) { return p.first == name; }))
+          throw InputError("<Checkpoint / Allow parameter change> names <" +
+                           name +
+                           ">, which is not a parameter that this run's "
+                           "checkpoints record; they record: " +
+                           recorded + ".");
+    }
+  } // namespace
 
 
 
@@ -31,7 +61,10 @@ namespace PhaseField
     , step_sizes(step_sizes)
     , remeshing(remeshing)
     , n_steps(settings.n_steps())
-  {}
+  {
+    check_allowed_changes(settings.checkpoint_parameters,
+                          settings.allowed_changes);
+  }
 
 
 

@@ -113,9 +113,10 @@ namespace PhaseField
         std::to_string(last_step) + ", and this run ends with step " +
         std::to_string(data.final_step) +
         " (<Time stepping / Number of steps> plus <Ramp-up steps>, or the "
-        "step at which <Stationary tolerance> ended it): there is no step "
-        "to take. Raise <Time stepping / Number of steps> to continue the "
-        "run.");
+        "step at which <Stationary tolerance> ended it; shape_from_contour: "
+        "the steps of its last level): there is no step to take. Raise "
+        "<Time stepping / Number of steps> (shape_from_contour: the last "
+        "entry of <Multilevel / Steps per level>) to continue the run.");
     if (reached_end_time())
       throw InputError("<Checkpoint / Resume> = true, but the last checkpoint "
                        "in <" +

@@ -10,10 +10,12 @@
 # checkpoint.txt without its header, a state.txt with a time later than
 # the steps reach, a negative step size or a step before its step offset
 # (with checksums that match), another Finest level, Epsilon or
-# Dimension, a statistics.csv without the checkpoint's row and one with a
-# damaged row, and Number of steps = the checkpoint's step. On 2 ranks
-# only the truncated file, the Finest level and the short statistics.csv
-# of these (the others are checked by the same code on rank 0). Then an
+# Dimension, a statistics.csv without the checkpoint's row and with
+# damaged rows (a bad step, letters, too few entries), an unknown name in
+# <Checkpoint / Allow parameter change>, and Number of steps = the
+# checkpoint's step. On 2 ranks only the truncated file, the Finest level,
+# the short statistics.csv, the row with letters and the unknown name of
+# these (the others are checked by the same code on rank 0). Then an
 # allowed change (<Checkpoint / Allow parameter change>) resumes with a
 # warning, and the untouched copy resumes. Also the output directory lock:
 # a lock of a running process refuses the run (exit 2, naming the pid),
@@ -130,6 +132,23 @@ if [ "$ranks" -eq 1 ]; then
   expect "damaged statistics.csv row" 2 \
     "Cannot continue <$work/badrow/statistics.csv>: line 3 <x,"
 fi
+
+# whole rows are checked, not only their step
+copy letters; sed -i '3s/^1,[^,]*,/1,abc,/' "$work/letters/statistics.csv"
+resume letters
+expect "statistics.csv row with letters" 2 \
+  "Cannot continue <$work/letters/statistics.csv>: line 3 <1,abc,.*> has <abc> in column 2, which is not a number"
+
+if [ "$ranks" -eq 1 ]; then
+  copy short_row; sed -i '3s/.*/nan,inf/' "$work/short_row/statistics.csv"
+  resume short_row
+  expect "statistics.csv row nan,inf" 2 \
+    "Cannot continue <$work/short_row/statistics.csv>: line 3 <nan,inf> has 2 entries instead of [0-9]+"
+fi
+
+copy bogus; resume bogus --set "Checkpoint/Allow parameter change=Bogus / Name"
+expect "Allow parameter change of an unknown name" 2 \
+  "<Checkpoint / Allow parameter change> names <Bogus / Name>, which is not a parameter that this run's checkpoints record; they record: .*Phase field / Epsilon"
 
 copy nothing; resume nothing --set "Time stepping/Number of steps=2"
 expect "no step after the checkpoint" 2 \

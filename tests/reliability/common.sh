@@ -1,13 +1,15 @@
 # Helpers of the reliability tests (sourced; needs $mpiexec).
 # run <ranks> <command...>: runs the command on <ranks> MPI ranks (1:
-# without mpiexec) for at most 60 s; sets $status and $output.
+# without mpiexec) for at most $time_limit s (default 60); sets $status
+# and $output.
+time_limit=60
 run() {
   ranks="$1"; shift
   if [ "$ranks" -eq 1 ]; then
-    output=$(OMP_NUM_THREADS=1 timeout 60 "$@" 2>&1)
+    output=$(OMP_NUM_THREADS=1 timeout $time_limit "$@" 2>&1)
   else
-    output=$(OMP_NUM_THREADS=1 timeout 60 "$mpiexec" --allow-run-as-root \
-      --oversubscribe -n "$ranks" "$@" 2>&1)
+    output=$(OMP_NUM_THREADS=1 timeout $time_limit "$mpiexec" \
+      --allow-run-as-root --oversubscribe -n "$ranks" "$@" 2>&1)
   fi
   status=$?
 }
@@ -21,7 +23,7 @@ expect() {
   name="$1"; expected="$2"; pattern="$3"
   problem=""
   if [ "$status" -eq 124 ]; then
-    problem="timeout after 60 s (a hang?)"
+    problem="timeout after $time_limit s (a hang?)"
   elif [ "$status" -ne "$expected" ]; then
     problem="exit status $status, expected $expected"
   elif ! printf '%s' "$output" | grep -Eq -- "$pattern"; then

@@ -32,6 +32,14 @@ namespace PhaseField
     unsigned int max_outer_iterations = 30;
     /** Limit of the trust-region iterations per inner minimisation. */
     unsigned int max_trust_region_iterations = 200;
+    /**
+     * Limit of the trust-region iterations of one attempt of a step, over
+     * all its outer iterations: with max_cg_iterations it bounds the work
+     * of a step.
+     */
+    unsigned int max_step_trust_region_iterations = 1000;
+    /** Limit of the CG iterations of one attempt of a step, likewise. */
+    unsigned int max_step_cg_iterations = 20000;
     /** Limit of the truncated-CG iterations per trust-region step. */
     unsigned int max_cg_iterations = 2000;
     /** The inner trust-region solver: ours (false) or Trilinos ROL's. */

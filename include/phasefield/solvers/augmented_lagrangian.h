@@ -91,6 +91,14 @@ namespace PhaseField
     /** lambda at the start. */
     double       initial_penalty      = 10;
     unsigned int max_outer_iterations = 30;
+    /**
+     * Limit of the trust-region iterations summed over the outer
+     * iterations: each inner minimisation may use what is left of it (at
+     * most trust_region.max_iterations).
+     */
+    unsigned int max_total_trust_region_iterations = 1000;
+    /** Limit of the truncated-CG iterations summed likewise. */
+    unsigned int max_total_cg_iterations = 20000;
     /** The inner solver (its gradient tolerance is set per iteration). */
     TrustRegionControl trust_region;
     /**
@@ -126,7 +134,9 @@ namespace PhaseField
    * w <- w / lambda. Otherwise lambda <- AugmentedLagrangian::penalty_growth
    * lambda, eta <- lambda^-eta_exponent, w <- 1/lambda. @p x and @p p are
    * updated in place (warm start and result). Not converged: the trust
-   * region failed or max_outer_iterations were used.
+   * region failed, or max_outer_iterations,
+   * max_total_trust_region_iterations or max_total_cg_iterations were
+   * used.
    */
   AugmentedLagrangianReport
   augmented_lagrangian_minimize(ConstrainedMinimizationProblem   &problem,

@@ -2,6 +2,7 @@
 #define phasefield_solvers_trust_region_h
 
 #include <deal.II/base/conditional_ostream.h>
+#include <limits>
 #include <phasefield/core/linear_algebra.h>
 
 /**
@@ -62,6 +63,12 @@ namespace PhaseField
     unsigned int max_iterations     = 200;
     /** Truncated-CG iterations per trust-region step. */
     unsigned int max_cg_iterations = 2000;
+    /**
+     * Truncated-CG iterations of the whole minimisation: it stops (not
+     * converged) when they are used (trust_region_minimize() only).
+     */
+    unsigned int max_total_cg_iterations =
+      std::numeric_limits<unsigned int>::max();
     /**
      * The radius at the start (B norm); 0: the B norm of the
      * preconditioned gradient B^-1 g, the step a preconditioned gradient

@@ -9,7 +9,8 @@
 namespace PhaseField
 {
   /**
-   * Stop before output that would contain NaN or Inf: throws (on every
+   * Stop before output that would contain NaN or Inf (also an entry beyond
+   * the range of the VTU file's 32-bit floats, 3.4e38): throws (on every
    * rank, the count is summed over the vectors' communicator) a
    * dealii::ExceptionBase whose message names step @p step, the first
    * field of @p fields with a non-finite entry, the number of such entries
