@@ -1,3 +1,4 @@
+#include <cmath>
 #include <deal.II/base/conditional_ostream.h>
 #include <optional>
 #include <phasefield/mesh/operator_backend.h>
@@ -249,6 +250,26 @@ namespace PhaseField
     NewtonControl descent_control(control);
     descent_control.max_iterations = settings.newton.max_descent_iterations;
     return combine(newton, descent_solve(step, state, descent_control));
+  }
+
+
+
+  template <int dim>
+  bool
+  NestedScheme<dim>::energy_law_applies_from(const BlockVector &old_state) const
+  {
+    if (!constraints)
+      return true;
+    for (unsigned int j = 0; j < constraints->size(); ++j)
+      {
+        const double value  = constraints->value(j,
+                                                discretization.get_operators(),
+                                                old_state.block(Field::U));
+        const double target = constraints->target(j);
+        if (std::abs(value - target) > feasibility_tolerance * std::abs(target))
+          return false;
+      }
+    return true;
   }
 
 

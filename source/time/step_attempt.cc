@@ -203,7 +203,8 @@ namespace PhaseField
     std::ostringstream why;
     why << std::setprecision(4);
     if (scheme.has_energy_law() && client.energy_law_applies() &&
-        !data.changed_on_resume)
+        !data.changed_on_resume &&
+        scheme.energy_law_applies_from(data.old_state))
       {
         const double before = scheme.energy_law_energy(data.old_energies);
         const double rise   = scheme.energy_law_energy(energies) +

@@ -144,6 +144,20 @@ namespace PhaseField
                 const BlockVector &state,
                 const double       tau) const override;
 
+    /**
+     * False with volume or area constraints where @p old_state misses a
+     * held value by more than feasibility_tolerance (relative).
+     */
+    bool
+    energy_law_applies_from(const BlockVector &old_state) const override;
+
+    /**
+     * The relative miss of a held value below which a state counts as on
+     * the constraints: above the Newton tolerance's drift of the area
+     * functional, far below the change of a first step onto them.
+     */
+    static constexpr double feasibility_tolerance = 1e-7;
+
     /** The coefficients of a step of size @p tau. */
     NestedCoefficients
     coefficients(const double tau) const;

@@ -268,6 +268,21 @@ namespace PhaseField
       return 1e-10;
     }
 
+    /**
+     * Does the energy law hold for a step from @p old_state? The default:
+     * yes. NestedScheme with held volume or area: not from a state that
+     * does not have the held values (the first step with `Constraints /
+     * Reduced volume`, `Volume value` or `Area value`), whose step moves
+     * the interface onto the constraints and may raise the energy.
+     * Collective.
+     */
+    virtual bool
+    energy_law_applies_from(const BlockVector &old_state) const
+    {
+      (void)old_state;
+      return true;
+    }
+
     /** The dissipation of the step from @p old_state to @p state. */
     virtual double
     dissipation(const BlockVector &old_state,
