@@ -14,8 +14,8 @@
 //   not rise in any step (by more than 1e-9 relative, once stationary), and the
 //   multipliers are nonzero. Without the constraints the same flow changes the
 //   inside measure by more than 1e-3 in its first step: a solver that ignores
-//   them fails. (The initial reduced area of the sampled ellipse, semi-axes of
-//   the sharp nu = 0.7, is 0.73 with the phase field's area functional.)
+//   them fails. (The sampled ellipse has the semi-axes of a sharp nu = 0.7;
+//   with the phase field's area functional its reduced area is near 0.7.)
 
 #include "adaptive_test_mesh.h"
 #include "tests.h"

@@ -17,17 +17,13 @@ namespace PhaseField
 {
   using namespace dealii;
 
-  namespace
+  std::string
+  number_text(const double value)
   {
-    /** @p value with 6 significant digits (1e+30, not 31 digits). */
-    std::string
-    number_text(const double value)
-    {
-      std::ostringstream text;
-      text << value;
-      return text.str();
-    }
-  } // namespace
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
 
 
 
@@ -886,7 +882,7 @@ namespace PhaseField
     prm.leave_subsection();
     if (reduced_volume != 0 && !(volume && area))
       throw InputError(
-        "Constraints / Reduced volume = " + std::to_string(reduced_volume) +
+        "Constraints / Reduced volume = " + number_text(reduced_volume) +
         " needs Volume = fixed and Area = fixed.");
     if (reduced_volume != 0 && volume_value != 0)
       throw InputError("Constraints / Reduced volume and Volume value both "

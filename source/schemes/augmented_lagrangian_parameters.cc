@@ -97,20 +97,6 @@ namespace PhaseField
 
 
 
-  namespace
-  {
-    /** @p value as a message shows it. */
-    std::string
-    number_text(const double value)
-    {
-      std::ostringstream text;
-      text << value;
-      return text.str();
-    }
-  } // namespace
-
-
-
   void
   AugmentedLagrangianParameters::parse_parameters(ParameterHandler &prm)
   {

@@ -35,9 +35,8 @@ namespace PhaseField
 
     /**
      * The memory a run needs per cell of its mesh in @p dim dimensions:
-     * 8 KB in 2D (direct solver: 2.0 GiB for the 262,144 cells of a
-     * uniform level-9 mesh), 1.5 KB in 3D (matrix-free solver: 5.3 GB for
-     * the 3.9 million cells of the level-8 sphere).
+     * 8 KB in 2D (direct solver), 1.5 KB in 3D (matrix-free solver); the
+     * runs behind them: doc/willmore_flow.md, "Input checks".
      */
     double
     bytes_per_cell(const unsigned int dim);

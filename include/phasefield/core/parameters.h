@@ -39,6 +39,13 @@ namespace PhaseField
                            const std::string &parameter_name);
 
   /**
+   * @p value as a message shows it: 6 significant digits (1e+30, not 31
+   * digits).
+   */
+  std::string
+  number_text(const double value);
+
+  /**
    * Parse a comma separated list of doubles; throws InputError naming
    * @p parameter_name on failure.
    */
