@@ -3,6 +3,7 @@
 #include <phasefield/core/blas_kernels.h>
 #include <phasefield/core/file_io.h>
 #include <phasefield/core/mesh_size.h>
+#include <phasefield/core/message_text.h>
 #include <phasefield/core/parameters.h>
 #include <phasefield/core/program.h>
 #include <phasefield/core/stop_request.h>
@@ -188,11 +189,17 @@ namespace PhaseField
                       "default (see --help)" :
                       "Parameters read from " + command_line.parameter_file);
       for (const std::string &setting : command_line.settings)
-        std::cout << "\n  with --set \"" << setting << "\"";
+        std::cout << "\n  with --set \"" << abbreviated(setting) << "\"";
       std::cout << ":\n";
-      prm.print_parameters(std::cout,
+      // the parameters one line each, a huge value (an expression of
+      // hundreds of kilobytes) abbreviated as in the error messages
+      std::ostringstream parameters;
+      prm.print_parameters(parameters,
                            ParameterHandler::ShortPRM |
                              ParameterHandler::KeepDeclarationOrder);
+      std::istringstream lines(parameters.str());
+      for (std::string line; std::getline(lines, line);)
+        std::cout << abbreviated(line) << '\n';
       std::cout << std::endl;
     }
   } // namespace

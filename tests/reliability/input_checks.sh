@@ -5,7 +5,8 @@
 # - included parameter files that are a FIFO or larger than 16 MiB: exit 2
 #   naming the file, never read (a FIFO without a writer would block);
 # - a parameter file that starts with a UTF-8 byte order mark runs;
-# - an expression of 400 kB: exit 2, the message quotes 200 characters;
+# - an expression of 400 kB: exit 2, the message and the log's echo of
+#   the parameters quote 200 characters;
 # - Epsilon = 0.75 h runs with a warning about the resolution;
 # - a uniform 2D mesh at level 10 (about 8.6 GB) under `ulimit -v` of 4 GB:
 #   exit 2 with the estimate and the memory per rank;
@@ -48,6 +49,11 @@ expect "an expression of 400 kB" 2 \
 message=$(printf '%s\n' "$output" | grep "input error")
 [ ${#message} -gt 1000 ] && {
   echo "FAIL: the message about the long expression has ${#message} characters"
+  failed=1; }
+# nor does the log's echo of the parameters quote it in full
+longest=$(printf '%s\n' "$output" | awk '{ if (length($0) > m) m = length($0) } END { print m + 0 }')
+[ "$longest" -gt 1000 ] && {
+  echo "FAIL: the log of the long expression has a line of $longest characters"
   failed=1; }
 
 # a circle, and Inner tau below eps^2/2 (the demo's inner problem fails)
