@@ -9,7 +9,8 @@ stack (mesh, DoF handler, constraints, multigrid transfer, cell tables,
 level and fine vectors of deal.II; Trilinos vectors by the nearest
 function of this project). Prints MiB and bytes per DoF (the <DoFs> of
 all fields) per item; --other also lists the larger allocations that no
-rule names. Used for doc/scaling.md, "Item by item again".
+rule names. Used for doc/scaling.md, "Memory" (where the heap goes at
+its largest).
 """
 import re
 import subprocess

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <phasefield/core/file_io.h>
 #include <phasefield/core/statistics.h>
+#include <phasefield/geometry/surface_picture.h>
 #include <phasefield/mesh/zero_level_surface.h>
 #include <vtkCellArray.h>
 #include <vtkCleanPolyData.h>
@@ -424,6 +425,29 @@ namespace PhaseField
 
 
 
+    std::vector<double>
+    gathered_triangles(const DoFHandler<3> &dof_handler,
+                       const Vector        &ghosted_u)
+    {
+      return gather_on_root(local_triangles(dof_handler, ghosted_u),
+                            ghosted_u.get_mpi_communicator());
+    }
+
+
+
+    void
+    write_picture(const DoFHandler<3> &dof_handler,
+                  const Vector        &ghosted_u,
+                  const std::string   &filename)
+    {
+      const std::vector<double> all =
+        gathered_triangles(dof_handler, ghosted_u);
+      run_on_root(ghosted_u.get_mpi_communicator(),
+                  [&]() { SurfacePicture::write(all, filename); });
+    }
+
+
+
     std::string
     extension(const SurfaceFormat format)
     {
@@ -441,8 +465,7 @@ namespace PhaseField
     {
       const MPI_Comm mpi_communicator = ghosted_u.get_mpi_communicator();
       const std::vector<double> all =
-        gather_on_root(local_triangles(dof_handler, ghosted_u),
-                       mpi_communicator);
+        gathered_triangles(dof_handler, ghosted_u);
       Summary summary;
       run_on_root(mpi_communicator, [&]() {
         const vtkSmartPointer<vtkPolyData> surface = merged_surface(all);

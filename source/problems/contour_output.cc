@@ -12,6 +12,8 @@
 #include <phasefield/core/file_io.h>
 #include <phasefield/core/statistics.h>
 #include <phasefield/geometry/images.h>
+#include <phasefield/geometry/surface_picture.h>
+#include <phasefield/mesh/zero_level_surface.h>
 #include <phasefield/problems/contour_output.h>
 
 namespace PhaseField
@@ -154,9 +156,15 @@ namespace PhaseField
                (y + 1 < n && (f[i + n] < c) != below);
       }
 
-      /** 3D: alpha[U] in gray with the odd-level contours of both. */
-      void
-      draw_3d(const Labelings<3> &labelings, const std::string &filename)
+      /**
+       * 3D: @p shown (a labeling at the pixel centres) in gray with the
+       * odd-level contours of alpha* (blue) and, if @p with_current, of
+       * alpha[U] (red).
+       */
+      Canvas
+      labeling_canvas(const Labelings<3>        &labelings,
+                      const std::vector<double> &shown,
+                      const bool                 with_current)
       {
         const unsigned int n     = labelings.grid.pixels_per_direction();
         const unsigned int scale = magnification(n);
@@ -166,20 +174,53 @@ namespace PhaseField
           for (unsigned int x = 0; x < canvas.nx; ++x)
             {
               const unsigned int i = (y / scale) * n + x / scale;
-              Colour             c = gray(labelings.alpha[i] / top);
+              Colour             c = gray(shown[i] / top);
               // the line at the upper/right edge of the pixel block
               const bool edge =
                 (x + 1) % scale == 0 || (y + 1) % scale == 0 || scale == 1;
               for (double level = 1; level < top; level += 2)
                 {
-                  if (edge && on_contour(labelings.alpha, n, i, level))
+                  if (with_current && edge &&
+                      on_contour(labelings.alpha, n, i, level))
                     c = current_red;
                   if (edge && on_contour(labelings.target, n, i, level))
                     c = target_blue;
                 }
               canvas.set(x, y, c);
             }
+        return canvas;
+      }
+
+      /** 3D: alpha[U] in gray with the odd-level contours of both. */
+      void
+      draw_3d(const Labelings<3> &labelings, const std::string &filename)
+      {
+        const Canvas canvas = labeling_canvas(labelings, labelings.alpha, true);
         Images::write_rgb_png(canvas.rgb, canvas.nx, canvas.ny, filename);
+      }
+
+      /**
+       * The picture of the @p triangles of the body (left) beside the
+       * target labeling (right), both as high as the labeling's canvas.
+       */
+      void
+      draw_body(const Labelings<3>        &labelings,
+                const std::vector<double> &triangles,
+                const std::string         &filename)
+      {
+        const Canvas target =
+          labeling_canvas(labelings, labelings.target, false);
+        const std::vector<unsigned char> body =
+          SurfacePicture::render(triangles, target.nx, target.ny);
+        Canvas            both(2 * target.nx, target.ny);
+        const std::size_t row = 3 * std::size_t(target.nx);
+        for (unsigned int y = 0; y < target.ny; ++y)
+          {
+            auto out = both.rgb.begin() + 2 * row * y;
+            std::copy_n(body.begin() + row * y, row, out);
+            std::copy_n(target.rgb.begin() + row * y, row, out + row);
+          }
+        Images::write_rgb_png(both.rgb, both.nx, both.ny, filename);
       }
     } // namespace
 
@@ -289,6 +330,20 @@ namespace PhaseField
           (void)u;
           run_on_root(comm, [&]() { draw_3d(labelings, filename); });
         }
+    }
+
+
+
+    void
+    write_body_picture(const Labelings<3>  &labelings,
+                       const DoFHandler<3> &dof_handler,
+                       const Vector        &ghosted_u,
+                       const std::string   &filename)
+    {
+      const std::vector<double> triangles =
+        ZeroLevelSurface::gathered_triangles(dof_handler, ghosted_u);
+      run_on_root(ghosted_u.get_mpi_communicator(),
+                  [&]() { draw_body(labelings, triangles, filename); });
     }
 
 

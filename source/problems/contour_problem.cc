@@ -696,6 +696,17 @@ namespace PhaseField
                                  this->solution.block(0),
                                  directory + "/contour_level_" + level +
                                    ".png");
+    if constexpr (dim == 3)
+      {
+        // the continuous Q1 field: hanging nodes on their constraints
+        Vector u = this->solution.block(0);
+        this->discretization.get_constraints().distribute(u);
+        ContourOutput::write_body_picture(
+          labelings,
+          this->discretization.get_dof_handler(),
+          this->discretization.ghosted_copy(u),
+          directory + "/body_level_" + level + ".png");
+      }
   }
 
 

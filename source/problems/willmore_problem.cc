@@ -3,6 +3,7 @@
 #include <phasefield/core/statistics.h>
 #include <phasefield/geometry/images.h>
 #include <phasefield/geometry/shapes.h>
+#include <phasefield/mesh/zero_level_surface.h>
 #include <phasefield/problems/willmore_problem.h>
 #include <phasefield/schemes/constraints.h>
 #include <phasefield/schemes/scheme_registry.h>
@@ -133,6 +134,18 @@ namespace PhaseField
                                                   filename);
           std::cout << "Picture: " << filename << std::endl;
         });
+      }
+    else
+      {
+        const std::string filename =
+          this->willmore_parameters.output_directory + "/surface.png";
+        // the continuous Q1 field: hanging nodes on their constraints
+        Vector u = this->solution.block(0);
+        this->discretization.get_constraints().distribute(u);
+        ZeroLevelSurface::write_picture(this->discretization.get_dof_handler(),
+                                        this->discretization.ghosted_copy(u),
+                                        filename);
+        this->pcout << "Picture: " << filename << std::endl;
       }
   }
 

@@ -9,9 +9,15 @@ frequent colour (a blank or constant image, or one with a few stray
 pixels). Prints one line per file: size, distinct colours, share of the
 pixels that differ from the most frequent colour.
 
+Usage: check_png.py --same <a.png> <b.png>: fails (exit 1) unless both
+files decode to the same size and the same pixels (the picture of a run
+on 1 and on 2 ranks).
+
 Usage: check_png.py --self-test <directory>: writes a constant, a white,
 a nearly constant and a half black picture there and checks that the
-first three fail and the last passes (the check can fail).
+first three fail and the last passes (the check can fail), and that
+--same fails for the white and the half black picture and passes for one
+picture and itself.
 """
 import collections
 import struct
@@ -104,8 +110,33 @@ def self_test(directory):
         if status != expected:
             print(f"WRONG: status {status} for {name}.png, expected {expected}")
             wrong = 1
+    white, half = f"{directory}/white.png", f"{directory}/half_black.png"
+    for a, b, expected in [(white, half, 1), (half, half, 0)]:
+        status = same([a, b])
+        if status != expected:
+            print(f"WRONG: --same status {status} for {a} {b}")
+            wrong = 1
     print("the check fails for blank pictures" if not wrong else "FAIL")
     return wrong
+
+
+def same(paths):
+    if len(paths) != 2:
+        print("--same needs two files")
+        return 1
+    try:
+        a, b = (pixels(path) for path in paths)
+    except (OSError, ValueError, TypeError, zlib.error, struct.error) as e:
+        print(f"FAIL cannot read {paths} ({e})")
+        return 1
+    if a == b:
+        print(f"OK   {paths[0]} and {paths[1]}: the same pixels")
+        return 0
+    differ = sum(x != y for x, y in zip(a[2], b[2])) if a[:2] == b[:2] \
+        else "all"
+    print(f"FAIL {paths[0]} and {paths[1]} differ ({a[0]} x {a[1]} and "
+          f"{b[0]} x {b[1]}, {differ} pixels differ)")
+    return 1
 
 
 def main(paths):
@@ -130,4 +161,6 @@ def main(paths):
 if __name__ == "__main__":
     if sys.argv[1:2] == ["--self-test"]:
         sys.exit(self_test(sys.argv[2]))
+    if sys.argv[1:2] == ["--same"]:
+        sys.exit(same(sys.argv[2:]))
     sys.exit(main(sys.argv[1:]))

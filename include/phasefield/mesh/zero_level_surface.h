@@ -59,6 +59,27 @@ namespace PhaseField
     local_triangles(const dealii::DoFHandler<3> &dof_handler,
                     const Vector                &ghosted_u);
 
+    /**
+     * The triangles of local_triangles() of all ranks on rank 0 (9
+     * coordinates per triangle, one rank after the other; empty on the
+     * other ranks). Collective.
+     */
+    std::vector<double>
+    gathered_triangles(const dealii::DoFHandler<3> &dof_handler,
+                       const Vector                &ghosted_u);
+
+    /**
+     * Write a picture of the surface U = 0 of @p ghosted_u on
+     * @p dof_handler as the PNG file @p filename (SurfacePicture::write():
+     * seen from the default oblique direction, light gray on white; the
+     * same picture on any number of ranks). Rank 0 writes; throws
+     * WriteError on every rank if it cannot. Collective.
+     */
+    void
+    write_picture(const dealii::DoFHandler<3> &dof_handler,
+                  const Vector                &ghosted_u,
+                  const std::string           &filename);
+
     /** The file name extension of @p format (`stl`, `ply`). */
     std::string
     extension(const SurfaceFormat format);

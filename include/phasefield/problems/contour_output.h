@@ -12,7 +12,8 @@ namespace PhaseField
 {
   /**
    * What shape_from_contour writes at the end of every level beyond
-   * willmore_flow's output: the labelings as CSV, as VTU and as a picture.
+   * willmore_flow's output: the labelings as CSV, as VTU and as a picture,
+   * in 3D also the picture of the body beside its target labeling.
    */
   namespace ContourOutput
   {
@@ -66,6 +67,20 @@ namespace PhaseField
                   const Discretization<dim> &discretization,
                   const Vector              &u,
                   const std::string         &filename);
+
+    /**
+     * 3D: the PNG picture @p filename of the body {U < 0}, its surface
+     * U = 0 (of @p ghosted_u on @p dof_handler, the hanging nodes on their
+     * constraints) seen from the oblique direction of SurfacePicture (the
+     * view axis x_3 up) on the left, beside the target labeling alpha* on
+     * the right (black 0 to white at the largest label, its contour lines
+     * at the labels 1, 3, 5, ... in blue). Collective; rank 0 writes.
+     */
+    void
+    write_body_picture(const Labelings<3>          &labelings,
+                       const dealii::DoFHandler<3> &dof_handler,
+                       const Vector                &ghosted_u,
+                       const std::string           &filename);
   } // namespace ContourOutput
 } // namespace PhaseField
 

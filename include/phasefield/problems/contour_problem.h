@@ -369,7 +369,10 @@ namespace PhaseField
     std::vector<double>
     target_on(const HuffmanLabeling::LabelingGrid<dim> &target_grid) const;
 
-    /** labeling_level_<L>.csv (and labeling.csv) and the picture. */
+    /**
+     * labeling_level_<L>.csv (and labeling.csv) and the pictures
+     * contour_level_<L>.png and, in 3D, body_level_<L>.png.
+     */
     void
     write_level_results(const bool last_level);
 

@@ -48,7 +48,9 @@ namespace PhaseField
     /**
      * PhaseFieldProblem::run(), then in 2D the picture phase_field.png of
      * the final U with its zero level line in the output directory
-     * (Images::write_picture_with_zero_contour(), picture_pixels per side).
+     * (Images::write_picture_with_zero_contour(), picture_pixels per side),
+     * in 3D the picture surface.png of the final surface U = 0
+     * (ZeroLevelSurface::write_picture()).
      */
     void
     run() override;
