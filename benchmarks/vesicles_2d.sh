@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# 2D vesicle equilibria (doc/willmore_flow.md, "Vesicles in 2D"): the
+# 2D vesicle equilibria (doc/vesicles.md, "Results in 2D"): the
 # shipped parameter_files/vesicles/ellipse_nu<NN>_2d.prm at each finest
 # level (eps = 4h as in the files), run to stationarity on 2 MPI ranks
 # without VTU output. Prints one row per run: reduced area, level, steps,

@@ -4,7 +4,7 @@ dashed in gray, the last record of every run in colour.
 
 Reads <output directory>/solution.pvd of each run with VTK's Python bindings
 (Debian's python3-vtk9, which libvtk9-dev installs). Used for the pictures
-of doc/willmore_flow.md, "Vesicles in 2D".
+of doc/vesicles.md, "Results in 2D".
 
 Usage: plot_zero_lines.py <out.png> <title> <run directory>:<label> ...
 """
